@@ -1,0 +1,79 @@
+// The `rung` command: each subcommand is a thin layer over the libraries (architecture rule 1).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <string>
+
+#include "cli/parse_command.hpp"
+
+namespace {
+
+constexpr const char* kDescription =
+    "rung: a text-first toolchain for IEC 61131-3 PLC code (ST, IL, SFC; TwinCAT and CODESYS files)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{kDescription, "rung"};
+  app.set_version_flag("-V,--version", std::string("rung ") + RUNG_VERSION);
+  app.require_subcommand(0, 1);
+  app.footer("Run 'rung <command> --help' for the options of a command.");
+
+  std::string color_text = "auto";
+
+  rung::cli::ParseCommandOptions parse_options;
+  std::string format_text = "human";
+  CLI::App* parse = app.add_subcommand("parse", "Parse files and folders; print syntax errors (and trees)");
+  parse->add_option("paths", parse_options.paths, "Files or folders (folders are searched recursively)")
+      ->required();
+  parse->add_flag("--tree", parse_options.tree, "Print the syntax tree of each file");
+  parse->add_option("--format", format_text, "Output format")->check(CLI::IsMember({"human", "json"}));
+  parse->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
+  parse->add_flag("-q,--quiet", parse_options.quiet, "Do not print the closing summary line");
+  parse->add_option("-j,--jobs", parse_options.threads, "Files parsed in parallel (default: one per core)");
+
+  std::string help_topic;
+  CLI::App* help = app.add_subcommand("help", "Show help for rung or for one command");
+  help->add_option("command", help_topic, "The command to explain");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+
+  if (*help || app.get_subcommands().empty()) {
+    if (!help_topic.empty()) {
+      CLI::App* sub = nullptr;
+      try {
+        sub = app.get_subcommand(help_topic);
+      } catch (const CLI::OptionNotFound&) {
+        std::fprintf(stderr, "error: no command '%s'; run 'rung help' for the list\n", help_topic.c_str());
+        return 2;
+      }
+      std::fputs(sub->get_formatter()->make_help(sub, "rung " + sub->get_name(), CLI::AppFormatMode::Normal).c_str(),
+                 stdout);
+      return 0;
+    }
+    // app.help() would describe the selected subcommand ("help" itself); show the overview.
+    std::fputs(app.get_formatter()->make_help(&app, "rung", CLI::AppFormatMode::Normal).c_str(), stdout);
+    return app.get_subcommands().empty() && argc > 1 ? 2 : 0;
+  }
+
+  rung::cli::ColorChoice color = rung::cli::ColorChoice::Auto;
+  rung::cli::parse_color_choice(color_text, &color);
+
+  if (*parse) {
+    parse_options.color = color;
+    parse_options.format = format_text == "json" ? rung::cli::OutputFormat::Json : rung::cli::OutputFormat::Human;
+    return rung::cli::run_parse_command(parse_options, stdout, stderr);
+  }
+  return 0;
+}

@@ -1,0 +1,956 @@
+/**
+ * @file Tree-sitter grammar for IEC 61131-3 (rung)
+ *
+ * Covers Structured Text, Instruction List, textual SFC and configurations,
+ * with the dialects of CODESYS V2.3 and V3, TwinCAT 3, OpenPCS and
+ * Beremiz/OpenPLC: object-oriented extensions, pragmas, both POU shapes
+ * (with and without END_ keywords) and code fragments at top level.
+ *
+ * Keywords are case-insensitive and reserved only where they must be: the
+ * external scanner turns METHOD, PROPERTY, ACTION, STEP, TRANSITION, GET,
+ * SET, CLASS, NAMESPACE, INTERFACE, USING, TYPE and AT into keywords only
+ * where a declaration may start and the next token looks like one.
+ */
+
+/* eslint-disable arrow-parens, camelcase, max-len */
+
+// ---------------------------------------------------------------------------
+// Operator precedence: the one table (highest number binds tightest).
+//   ()  call  ^ . []  unary - + NOT  **  * / MOD  + -  < > <= >=  = <>
+//   AND &  AND_THEN  XOR  OR  OR_ELSE
+// ---------------------------------------------------------------------------
+const PREC = {
+  OR_ELSE: 1,
+  OR: 2,
+  XOR: 3,
+  AND_THEN: 4,
+  AND: 5,
+  EQUALITY: 6,
+  COMPARISON: 7,
+  ADDITIVE: 8,
+  MULTIPLICATIVE: 9,
+  POWER: 10,
+  UNARY: 11,
+  POSTFIX: 12,
+  CALL: 13,
+};
+
+// [operator, precedence]; word operators are case-insensitive keywords.
+const BINARY_OPERATORS = [
+  ['OR_ELSE', PREC.OR_ELSE],
+  ['OR', PREC.OR],
+  ['XOR', PREC.XOR],
+  ['AND_THEN', PREC.AND_THEN],
+  ['AND', PREC.AND],
+  ['&', PREC.AND],
+  ['=', PREC.EQUALITY],
+  ['<>', PREC.EQUALITY],
+  ['<', PREC.COMPARISON],
+  ['>', PREC.COMPARISON],
+  ['<=', PREC.COMPARISON],
+  ['>=', PREC.COMPARISON],
+  ['+', PREC.ADDITIVE],
+  ['-', PREC.ADDITIVE],
+  ['*', PREC.MULTIPLICATIVE],
+  ['/', PREC.MULTIPLICATIVE],
+  ['MOD', PREC.MULTIPLICATIVE],
+  ['**', PREC.POWER],
+];
+
+const VAR_KEYWORDS = [
+  'VAR', 'VAR_INPUT', 'VAR_OUTPUT', 'VAR_IN_OUT', 'VAR_GLOBAL', 'VAR_EXTERNAL',
+  'VAR_TEMP', 'VAR_STAT', 'VAR_INST', 'VAR_CONFIG', 'VAR_ACCESS',
+];
+
+const VAR_QUALIFIERS = ['CONSTANT', 'RETAIN', 'PERSISTENT', 'NON_RETAIN'];
+
+const MODIFIERS = ['PUBLIC', 'PRIVATE', 'PROTECTED', 'INTERNAL', 'ABSTRACT', 'FINAL'];
+
+/**
+ * A case-insensitive keyword shown as its upper-case spelling.
+ * @param {string} word
+ * @return {AliasRule}
+ */
+function kw(word) {
+  return alias(new RegExp(word.replace(/[^A-Za-z0-9_]/g, '\\$&'), 'i'), word);
+}
+
+/**
+ * A case-insensitive spelling shown as another keyword.
+ * @param {string} spelling
+ * @param {string} shown
+ * @return {AliasRule}
+ */
+function kwAs(spelling, shown) {
+  return alias(new RegExp(spelling, 'i'), shown);
+}
+
+/**
+ * One or more rules separated by commas.
+ * @param {Rule} rule
+ * @return {SeqRule}
+ */
+function commaSep1(rule) {
+  return seq(rule, repeat(seq(',', rule)));
+}
+
+/**
+ * Zero or more rules separated by commas.
+ * @param {Rule} rule
+ * @return {ChoiceRule}
+ */
+function commaSep(rule) {
+  return optional(commaSep1(rule));
+}
+
+/**
+ * Variable blocks and members, then an optional body and more members (the
+ * TwinCAT/CODESYS object shape: each member ends where the next one starts).
+ * @param {GrammarSymbols} $
+ * @return {Rule[]}
+ */
+function pouContents($) {
+  return [
+    repeat(choice($.var_block, $._member)),
+    optional(seq(field('body', $._body), repeat($._member))),
+  ];
+}
+
+module.exports = grammar({
+  name: 'iec61131',
+
+  word: $ => $.identifier,
+
+  externals: $ => [
+    $.comment,
+    $.attribute_pragma,
+    $.conditional_pragma,
+    $.message_pragma,
+    $.region_pragma,
+    $.generic_pragma,
+    $._il_newline,
+    $._kw_method,
+    $._kw_property,
+    $._kw_action,
+    $._kw_step,
+    $._kw_transition,
+    $._kw_get,
+    $._kw_set,
+    $._kw_class,
+    $._kw_namespace,
+    $._kw_interface,
+    $._kw_using,
+    $._kw_type,
+    $._kw_at,
+    $._error_sentinel,
+  ],
+
+  extras: $ => [/[\s\uFEFF\u00A0]/, $.comment, $.pragma],
+
+  conflicts: $ => [
+    [$._top_level_statements],
+    [$.var_declaration, $.label, $.il_label],
+    [$._dotted_name, $._reference],
+    [$.case_element],
+    [$._reference, $._il_operator],
+    [$.jmp_statement, $._il_operator],
+    [$.label, $.il_label],
+    [$._type_spec, $.subrange_type],
+  ],
+
+  rules: {
+    // -----------------------------------------------------------------------
+    // Top level
+    // -----------------------------------------------------------------------
+    source_file: $ => repeat($._top_level_item),
+
+    _top_level_item: $ => choice(
+      $._declaration_item,
+      $.configuration_declaration,
+      $.resource_declaration,
+      alias($._top_level_statements, $.statement_list),
+      $.il_body,
+      $.sfc_network,
+      // declaration lines without their VAR block (fragments)
+      prec.dynamic(-2, $.var_declaration),
+    ),
+
+    _declaration_item: $ => choice(
+      $.program_declaration,
+      $.function_declaration,
+      $.function_block_declaration,
+      $.method_declaration,
+      $.property_declaration,
+      $.interface_declaration,
+      $.action_declaration,
+      $.class_declaration,
+      $.namespace_declaration,
+      $.using_directive,
+      $.type_declaration,
+      $.var_block,
+    ),
+
+    // {attribute 'x' := 'y'}, {IF defined(x)}, {warning '...'}, {region "x"}, ...
+    // The external scanner reads the text between the braces and tells its kind.
+    pragma: $ => seq(
+      '{',
+      choice(
+        $.attribute_pragma,
+        $.conditional_pragma,
+        $.message_pragma,
+        $.region_pragma,
+        $.generic_pragma,
+      ),
+      '}',
+    ),
+
+    qualified_name: $ => seq($.identifier, repeat(seq('.', $.identifier))),
+
+    _dotted_name: $ => seq($.identifier, repeat1(seq('.', $.identifier))),
+
+    type_name: $ => seq($.identifier, repeat(seq('.', $.identifier))),
+
+    // -----------------------------------------------------------------------
+    // POUs
+    // -----------------------------------------------------------------------
+    program_declaration: $ => prec.right(seq(
+      kw('PROGRAM'),
+      field('name', $.identifier),
+      ...pouContents($),
+      optional(kw('END_PROGRAM')),
+    )),
+
+    function_declaration: $ => prec.right(seq(
+      kw('FUNCTION'),
+      repeat($.modifier),
+      field('name', $.identifier),
+      optional(field('type_parameters', $.generic_parameters)),
+      optional(seq(':', field('type', $._type_spec))),
+      repeat($.var_block),
+      optional(field('body', $._body)),
+      optional(kw('END_FUNCTION')),
+    )),
+
+    function_block_declaration: $ => prec.right(seq(
+      choice(kw('FUNCTION_BLOCK'), kwAs('FUNCTIONBLOCK', 'FUNCTION_BLOCK')),
+      $._class_header,
+      ...pouContents($),
+      optional(choice(kw('END_FUNCTION_BLOCK'), kwAs('END_FUNCTIONBLOCK', 'END_FUNCTION_BLOCK'))),
+    )),
+
+    class_declaration: $ => prec.right(seq(
+      alias($._kw_class, 'CLASS'),
+      $._class_header,
+      ...pouContents($),
+      optional(kw('END_CLASS')),
+    )),
+
+    _class_header: $ => seq(
+      repeat($.modifier),
+      field('name', $.identifier),
+      repeat($.modifier),
+      optional($.extends_clause),
+      optional($.implements_clause),
+    ),
+
+    // Variable blocks and members, then an optional body and more members
+    // (TwinCAT/CODESYS object shape: each member ends where the next starts).
+
+    _member: $ => choice(
+      $.method_declaration,
+      $.property_declaration,
+      $.action_declaration,
+    ),
+
+    modifier: _ => choice(...MODIFIERS.map(kw)),
+
+    extends_clause: $ => seq(kw('EXTENDS'), commaSep1($.type_name)),
+
+    implements_clause: $ => seq(kw('IMPLEMENTS'), commaSep1($.type_name)),
+
+    generic_parameters: $ => seq('<', commaSep1($.generic_parameter), '>'),
+
+    generic_parameter: $ => seq(
+      field('name', $.identifier),
+      ':',
+      field('constraint', $.type_name),
+    ),
+
+    method_declaration: $ => prec.right(seq(
+      alias($._kw_method, 'METHOD'),
+      repeat($.modifier),
+      field('name', $.identifier),
+      repeat($.modifier),
+      optional(seq(':', field('type', $._type_spec), repeat($.modifier))),
+      repeat($.var_block),
+      optional(field('body', $._body)),
+      optional(kw('END_METHOD')),
+    )),
+
+    property_declaration: $ => prec.right(choice(
+      seq(
+        alias($._kw_property, 'PROPERTY'),
+        repeat($.modifier),
+        field('name', $.identifier),
+        repeat($.modifier),
+        optional(seq(':', field('type', $._type_spec), repeat($.modifier))),
+        repeat($.var_block),
+        repeat($.property_accessor),
+        optional(kw('END_PROPERTY')),
+      ),
+      // IEC 61131-3 (2025) form
+      seq(
+        field('accessor', choice(kw('PROPERTY_GET'), kw('PROPERTY_SET'))),
+        repeat($.modifier),
+        field('name', $.identifier),
+        repeat($.modifier),
+        optional(seq(':', field('type', $._type_spec), repeat($.modifier))),
+        repeat($.var_block),
+        optional(field('body', $._body)),
+        optional(kw('END_PROPERTY')),
+      ),
+    )),
+
+    property_accessor: $ => prec.right(seq(
+      field('kind', choice(alias($._kw_get, 'GET'), alias($._kw_set, 'SET'))),
+      repeat($.modifier),
+      repeat($.var_block),
+      optional(field('body', $._body)),
+      optional(choice(kw('END_GET'), kw('END_SET'))),
+    )),
+
+    interface_declaration: $ => prec.right(seq(
+      alias($._kw_interface, 'INTERFACE'),
+      repeat($.modifier),
+      field('name', $.identifier),
+      optional($.extends_clause),
+      repeat(choice($.method_declaration, $.property_declaration, $.var_block)),
+      optional(kw('END_INTERFACE')),
+    )),
+
+    action_declaration: $ => prec.right(seq(
+      alias($._kw_action, 'ACTION'),
+      field('name', $.identifier),
+      optional(':'),
+      repeat($.var_block),
+      optional(field('body', $._body)),
+      optional(kw('END_ACTION')),
+    )),
+
+    namespace_declaration: $ => seq(
+      alias($._kw_namespace, 'NAMESPACE'),
+      field('name', $.qualified_name),
+      repeat($._declaration_item),
+      kw('END_NAMESPACE'),
+    ),
+
+    using_directive: $ => seq(
+      alias($._kw_using, 'USING'),
+      commaSep1($.qualified_name),
+      ';',
+    ),
+
+    _body: $ => choice($.statement_list, $.il_body, $.sfc_network),
+
+    // -----------------------------------------------------------------------
+    // Data types
+    // -----------------------------------------------------------------------
+    type_declaration: $ => prec.right(seq(
+      alias($._kw_type, 'TYPE'),
+      repeat(choice($.struct_type, $.union_type, $.enum_type, $.alias_type)),
+      kw('END_TYPE'),
+      optional(';'),
+    )),
+
+    struct_type: $ => prec.right(seq(
+      field('name', $.identifier),
+      optional($.extends_clause),
+      ':',
+      kw('STRUCT'),
+      optional($.extends_clause),
+      repeat(choice($.var_declaration, $.empty_declaration)),
+      kw('END_STRUCT'),
+      optional(seq(':=', field('value', $._initializer))),
+      optional(';'),
+    )),
+
+    // STRUCT ... END_STRUCT written inside a variable declaration
+    _inline_struct: $ => seq(
+      kw('STRUCT'),
+      repeat(choice($.var_declaration, $.empty_declaration)),
+      kw('END_STRUCT'),
+    ),
+
+    union_type: $ => seq(
+      field('name', $.identifier),
+      ':',
+      kw('UNION'),
+      repeat($.var_declaration),
+      kw('END_UNION'),
+      optional(';'),
+    ),
+
+    enum_type: $ => prec.right(seq(
+      field('name', $.identifier),
+      ':',
+      optional(field('base', $.type_name)),
+      '(',
+      commaSep1($.enum_value),
+      optional(','),
+      ')',
+      optional(field('base', $.type_name)),
+      optional(seq(':=', field('value', $._expression))),
+      optional(';'),
+    )),
+
+    enum_value: $ => seq(
+      field('name', $.identifier),
+      optional(seq(':=', field('value', $._expression))),
+    ),
+
+    alias_type: $ => seq(
+      field('name', $.identifier),
+      ':',
+      field('type', $._type_spec),
+      optional(seq(':=', field('value', $._initializer))),
+      optional(';'),
+    ),
+
+    _type_spec: $ => choice(
+      $.type_name,
+      $.string_type,
+      $.array_type,
+      $.pointer_type,
+      $.reference_type,
+      $.subrange_type,
+    ),
+
+    string_type: $ => prec.right(seq(
+      choice(kw('STRING'), kw('WSTRING')),
+      optional(choice(
+        seq('(', field('length', $._expression), ')'),
+        seq('[', field('length', $._expression), ']'),
+      )),
+    )),
+
+    array_type: $ => seq(
+      kw('ARRAY'),
+      '[',
+      commaSep1(choice($.range, alias('*', $.wildcard))),
+      ']',
+      kw('OF'),
+      field('element', $._type_spec),
+    ),
+
+    range: $ => seq(
+      field('lower', $._expression),
+      '..',
+      field('upper', $._expression),
+    ),
+
+    pointer_type: $ => prec.right(seq(kw('POINTER'), optional(seq(kw('TO'), field('type', $._type_spec))))),
+
+    reference_type: $ => seq(
+      choice(seq(kw('REFERENCE'), kw('TO')), kw('REF_TO')),
+      field('type', $._type_spec),
+    ),
+
+    subrange_type: $ => seq(
+      field('base', $.type_name),
+      '(',
+      field('range', $.range),
+      ')',
+    ),
+
+    // -----------------------------------------------------------------------
+    // Variable declarations
+    // -----------------------------------------------------------------------
+    var_block: $ => prec.right(seq(
+      field('kind', choice(...VAR_KEYWORDS.map(kw))),
+      repeat($.var_qualifier),
+      repeat(choice($.var_declaration, $.empty_declaration)),
+      kw('END_VAR'),
+      optional(';'),
+    )),
+
+    empty_declaration: _ => ';',
+
+    var_qualifier: _ => choice(...VAR_QUALIFIERS.map(kw)),
+
+    var_declaration: $ => prec.right(seq(
+      optional(commaSep1(field('name', choice($.identifier, alias($._dotted_name, $.qualified_name))))),
+      optional(field('location', $.location)),
+      ':',
+      field('type', choice($._type_spec, alias($._inline_struct, $.struct_type))),
+      optional(field('edge', choice(kw('R_EDGE'), kw('F_EDGE')))),
+      optional(field('arguments', $.argument_list)),
+      optional(seq(
+        choice(':=', kwAs('REF=', 'REF=')),
+        field('value', $._initializer),
+      )),
+      optional(';'),
+    )),
+
+    location: $ => seq(alias($._kw_at, 'AT'), field('address', $.direct_variable)),
+
+    _initializer: $ => choice(
+      $._init_element,
+      alias($._bare_array_initializer, $.array_initializer),
+    ),
+
+    _bare_array_initializer: $ => seq($._init_element, repeat1(seq(',', $._init_element))),
+
+    _init_element: $ => choice($._expression, $.repeated_initializer),
+
+    repeated_initializer: $ => seq(
+      field('count', $.integer_literal),
+      '(',
+      optional(commaSep1($._init_element)),
+      ')',
+    ),
+
+    array_initializer: $ => seq(
+      '[',
+      optional(seq(commaSep1($._init_element), optional(','))),
+      ']',
+    ),
+
+    struct_initializer: $ => seq(
+      '(',
+      commaSep1($.field_initializer),
+      optional(','),
+      ')',
+    ),
+
+    field_initializer: $ => seq(
+      field('name', $.identifier),
+      ':=',
+      field('value', $._init_element),
+    ),
+
+    // -----------------------------------------------------------------------
+    // Structured Text statements
+    // -----------------------------------------------------------------------
+    statement_list: $ => prec.right(repeat1($._statement)),
+
+    // Statements at top level: GLR decides where a declaration line starts.
+    _top_level_statements: $ => prec.dynamic(-1, repeat1($._statement)),
+
+    _statement: $ => choice(
+      $.assignment_statement,
+      $.call_statement,
+      $.if_statement,
+      $.case_statement,
+      $.for_statement,
+      $.while_statement,
+      $.repeat_statement,
+      $.exit_statement,
+      $.continue_statement,
+      $.return_statement,
+      $.jmp_statement,
+      $.label,
+      $.empty_statement,
+      $.try_statement,
+    ),
+
+    _assignment_operator: _ => choice(
+      ':=',
+      kwAs('S=', 'S='),
+      kwAs('R=', 'R='),
+      kwAs('REF=', 'REF='),
+      '?=',
+    ),
+
+    assignment_statement: $ => seq(
+      field('left', $._reference),
+      field('operator', $._assignment_operator),
+      field('right', choice($._expression, $.assignment_expression)),
+      ';',
+    ),
+
+    // CODESYS multiple assignment: a := b := 0;
+    assignment_expression: $ => prec.right(seq(
+      field('left', $._reference),
+      field('operator', ':='),
+      field('right', choice($._expression, $.assignment_expression)),
+    )),
+
+    call_statement: $ => seq($.call_expression, ';'),
+
+    if_statement: $ => prec.right(seq(
+      kw('IF'),
+      field('condition', $._expression),
+      kw('THEN'),
+      optional(field('body', $.statement_list)),
+      repeat($.elsif_clause),
+      optional($.else_clause),
+      kw('END_IF'),
+      optional(';'),
+    )),
+
+    elsif_clause: $ => seq(
+      kw('ELSIF'),
+      field('condition', $._expression),
+      kw('THEN'),
+      optional(field('body', $.statement_list)),
+    ),
+
+    else_clause: $ => seq(kw('ELSE'), optional(field('body', $.statement_list))),
+
+    case_statement: $ => prec.right(seq(
+      kw('CASE'),
+      field('value', $._expression),
+      kw('OF'),
+      repeat($.case_element),
+      optional($.else_clause),
+      kw('END_CASE'),
+      optional(';'),
+    )),
+
+    case_element: $ => seq(
+      commaSep1(field('label', choice($._expression, $.range))),
+      ':',
+      optional(field('body', alias($._case_body, $.statement_list))),
+    ),
+
+    // Statements of a case element; GLR decides where the next label starts.
+    _case_body: $ => repeat1($._statement),
+
+    for_statement: $ => prec.right(seq(
+      kw('FOR'),
+      field('variable', $._reference),
+      ':=',
+      field('start', $._expression),
+      kw('TO'),
+      field('end', $._expression),
+      optional(seq(kw('BY'), field('step', $._expression))),
+      kw('DO'),
+      optional(field('body', $.statement_list)),
+      kw('END_FOR'),
+      optional(';'),
+    )),
+
+    while_statement: $ => prec.right(seq(
+      kw('WHILE'),
+      field('condition', $._expression),
+      kw('DO'),
+      optional(field('body', $.statement_list)),
+      kw('END_WHILE'),
+      optional(';'),
+    )),
+
+    repeat_statement: $ => prec.right(seq(
+      kw('REPEAT'),
+      optional(field('body', $.statement_list)),
+      kw('UNTIL'),
+      field('condition', $._expression),
+      optional(';'),
+      kw('END_REPEAT'),
+      optional(';'),
+    )),
+
+    exit_statement: _ => seq(kw('EXIT'), ';'),
+
+    continue_statement: _ => seq(kw('CONTINUE'), ';'),
+
+    return_statement: _ => seq(kw('RETURN'), ';'),
+
+    jmp_statement: $ => seq(kw('JMP'), field('label', $.identifier), ';'),
+
+    label: $ => prec.dynamic(-1, seq(field('name', $.identifier), ':')),
+
+    empty_statement: _ => ';',
+
+    // TwinCAT exception handling
+    try_statement: $ => prec.right(seq(
+      kw('__TRY'),
+      optional(field('body', $.statement_list)),
+      optional($.catch_clause),
+      optional($.finally_clause),
+      kw('__ENDTRY'),
+      optional(';'),
+    )),
+
+    catch_clause: $ => seq(
+      kw('__CATCH'),
+      optional(seq('(', field('exception', $.identifier), ')')),
+      optional(field('body', $.statement_list)),
+    ),
+
+    finally_clause: $ => seq(kw('__FINALLY'), optional(field('body', $.statement_list))),
+
+    // -----------------------------------------------------------------------
+    // Expressions
+    // -----------------------------------------------------------------------
+    _expression: $ => choice(
+      $.binary_expression,
+      $.unary_expression,
+      $._primary_expression,
+    ),
+
+    binary_expression: $ => choice(...BINARY_OPERATORS.map(([op, p]) => prec.left(p, seq(
+      field('left', $._expression),
+      field('operator', /^[A-Z_]+$/.test(op) ? kw(op) : op),
+      field('right', $._expression),
+    )))),
+
+    unary_expression: $ => prec(PREC.UNARY, seq(
+      field('operator', choice('-', '+', kw('NOT'), '&')),
+      field('operand', $._expression),
+    )),
+
+    _primary_expression: $ => choice(
+      $._reference,
+      $.parenthesized_expression,
+      $.struct_initializer,
+      $.array_initializer,
+      $._literal,
+    ),
+
+    // Anything that may be assigned, called or followed by . [ ] ^
+    _reference: $ => choice(
+      $.identifier,
+      $.direct_variable,
+      $.member_expression,
+      $.index_expression,
+      $.dereference_expression,
+      $.call_expression,
+    ),
+
+    _postfix_target: $ => $._reference,
+
+    parenthesized_expression: $ => seq('(', $._expression, ')'),
+
+    member_expression: $ => prec(PREC.POSTFIX, seq(
+      field('object', $._postfix_target),
+      '.',
+      field('member', choice($.identifier, $.integer_literal, $.direct_variable)),
+    )),
+
+    index_expression: $ => prec(PREC.POSTFIX, seq(
+      field('object', $._postfix_target),
+      '[',
+      commaSep1(field('index', $._expression)),
+      ']',
+    )),
+
+    dereference_expression: $ => prec(PREC.POSTFIX, seq(
+      field('operand', $._postfix_target),
+      '^',
+    )),
+
+    call_expression: $ => prec(PREC.CALL, seq(
+      field('function', $._reference),
+      field('arguments', $.argument_list),
+    )),
+
+    argument_list: $ => seq(
+      '(',
+      optional(seq(
+        choice($.argument, $.output_argument),
+        repeat(seq(choice(',', '|'), choice($.argument, $.output_argument))),
+      )),
+      ')',
+    ),
+
+    argument: $ => choice(
+      seq(field('name', $.identifier), ':=', optional(field('value', $._expression))),
+      field('value', $._expression),
+    ),
+
+    output_argument: $ => seq(
+      optional(field('negation', kw('NOT'))),
+      field('name', $.identifier),
+      '=>',
+      optional(field('target', $._reference)),
+    ),
+
+    // -----------------------------------------------------------------------
+    // Literals
+    // -----------------------------------------------------------------------
+    _literal: $ => choice(
+      $.integer_literal,
+      $.real_literal,
+      $.boolean_literal,
+      $.time_literal,
+      $.date_literal,
+      $.time_of_day_literal,
+      $.date_and_time_literal,
+      $.string_literal,
+      $.typed_literal,
+    ),
+
+    integer_literal: _ => token(choice(
+      /[0-9][0-9_]*/,
+      /2#[01_]+/,
+      /8#[0-7_]+/,
+      /16#[0-9A-Fa-f_]+/,
+    )),
+
+    real_literal: _ => token(choice(
+      /[0-9][0-9_]*\.[0-9][0-9_]*([eE][+-]?[0-9][0-9_]*)?/,
+      /[0-9][0-9_]*[eE][+-]?[0-9][0-9_]*/,
+    )),
+
+    boolean_literal: _ => choice(kw('TRUE'), kw('FALSE')),
+
+    // Unit order is not checked here (a later, semantic check does it).
+    time_literal: _ => token(/(t|time|lt|ltime)#[+-]?([0-9][0-9_]*(\.[0-9]+)?(d|h|m|s|ms|us|ns)_?)+/i),
+
+    date_literal: _ => token(/(d|date|ld|ldate)#[0-9]+-[0-9]+-[0-9]+/i),
+
+    time_of_day_literal: _ => token(/(tod|time_of_day|ltod|ltime_of_day)#[0-9]+:[0-9]+(:[0-9]+(\.[0-9]+)?)?/i),
+
+    date_and_time_literal: _ => token(/(dt|date_and_time|ldt|ldate_and_time)#[0-9]+-[0-9]+-[0-9]+-[0-9]+:[0-9]+(:[0-9]+(\.[0-9]+)?)?/i),
+
+    string_literal: _ => token(choice(
+      /'([^'$\r\n]|\$[^\r\n])*'/,
+      /"([^"$\r\n]|\$[^\r\n])*"/,
+    )),
+
+    // INT#5, UINT#16#FF, BOOL#TRUE, REAL#1.5, STRING#'x', E_Color#Red
+    typed_literal: $ => seq(
+      field('type', $.identifier),
+      token.immediate('#'),
+      field('value', choice(
+        seq(optional(choice('-', '+')), choice($.integer_literal, $.real_literal)),
+        $.boolean_literal,
+        $.string_literal,
+        $.identifier,
+      )),
+    ),
+
+    direct_variable: _ => token(choice(
+      /%[IQM][XBWDL]?(\*|[0-9]+(\.[0-9]+)*)/i,
+      /%[XBWD][0-9]+/i,
+    )),
+
+    // -----------------------------------------------------------------------
+    // Instruction List
+    // -----------------------------------------------------------------------
+    il_body: $ => prec.right(repeat1(choice($.il_instruction, $.il_label))),
+
+    il_label: $ => seq(field('name', choice($.identifier, alias(kw('CONTINUE'), $.identifier))), ':'),
+
+    _il_operator: $ => choice(
+      alias($.identifier, $.il_operator),
+      ...['AND', 'OR', 'XOR', 'NOT', 'MOD', 'JMP', 'RETURN'].map(w => alias(new RegExp(w, 'i'), $.il_operator)),
+    ),
+
+    il_instruction: $ => choice(
+      seq(
+        field('operator', $._il_operator),
+        optional(commaSep1(field('operand', $._expression))),
+        $._il_newline,
+      ),
+      // deferred operator: AND( ... ) over several lines
+      seq(
+        field('operator', $._il_operator),
+        '(',
+        optional(field('operand', $._expression)),
+        $._il_newline,
+        repeat(choice($.il_instruction, $.il_label)),
+        ')',
+        $._il_newline,
+      ),
+      // deferred operator on one line: MUL (2 ADD 3)
+      seq(
+        field('operator', $._il_operator),
+        '(',
+        field('operand', $._expression),
+        repeat1(alias($._il_inline_instruction, $.il_instruction)),
+        ')',
+        $._il_newline,
+      ),
+    ),
+
+    _il_inline_instruction: $ => seq(
+      field('operator', $._il_operator),
+      field('operand', $._expression),
+    ),
+
+    // -----------------------------------------------------------------------
+    // Sequential Function Chart (textual)
+    // -----------------------------------------------------------------------
+    sfc_network: $ => prec.right(repeat1(choice($.sfc_step, $.sfc_transition))),
+
+    sfc_step: $ => prec.right(seq(
+      choice(kw('INITIAL_STEP'), alias($._kw_step, 'STEP')),
+      field('name', $.identifier),
+      ':',
+      repeat($.sfc_action),
+      kw('END_STEP'),
+      optional(';'),
+    )),
+
+    // Action association inside a step: A1(N); A2(L, T#10s);
+    sfc_action: $ => seq(
+      field('name', $.identifier),
+      '(',
+      optional(seq(
+        field('qualifier', $.identifier),
+        repeat(seq(',', field('argument', $._expression))),
+      )),
+      ')',
+      ';',
+    ),
+
+    sfc_transition: $ => prec.right(seq(
+      alias($._kw_transition, 'TRANSITION'),
+      optional(field('name', $.identifier)),
+      optional(seq('(', $.identifier, ':=', field('priority', $._expression), ')')),
+      kw('FROM'),
+      field('from', $._step_list),
+      kw('TO'),
+      field('to', $._step_list),
+      choice(
+        seq(':=', field('condition', $._expression), ';'),
+        seq(':', optional(field('body', choice($.statement_list, $.il_body))), kw('END_TRANSITION'), optional(';')),
+      ),
+    )),
+
+    _step_list: $ => choice(
+      $.identifier,
+      seq('(', commaSep1($.identifier), ')'),
+    ),
+
+    // -----------------------------------------------------------------------
+    // Configurations
+    // -----------------------------------------------------------------------
+    configuration_declaration: $ => seq(
+      kw('CONFIGURATION'),
+      field('name', $.identifier),
+      repeat(choice($.var_block, $.resource_declaration, $.task_configuration, $.program_configuration)),
+      kw('END_CONFIGURATION'),
+    ),
+
+    resource_declaration: $ => seq(
+      kw('RESOURCE'),
+      field('name', $.identifier),
+      optional(seq(kw('ON'), field('processor', $.type_name))),
+      repeat(choice($.var_block, $.task_configuration, $.program_configuration)),
+      kw('END_RESOURCE'),
+    ),
+
+    task_configuration: $ => seq(
+      kw('TASK'),
+      field('name', $.identifier),
+      optional(field('arguments', $.argument_list)),
+      ';',
+    ),
+
+    program_configuration: $ => seq(
+      kw('PROGRAM'),
+      optional(field('qualifier', $.var_qualifier)),
+      field('name', $.identifier),
+      optional(seq(kw('WITH'), field('task', $.identifier))),
+      ':',
+      field('type', $.type_name),
+      optional(field('arguments', $.argument_list)),
+      ';',
+    ),
+
+    // Last, so that keywords (defined earlier) win over it when both match.
+    identifier: _ => /[\p{L}_][\p{L}\p{Nd}_]*/,
+  },
+});

@@ -1,0 +1,23 @@
+// XML character data as virtual text: entities unescaped, positions kept.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "parser/containers/container_document.hpp"
+
+namespace rung::containers {
+
+// Appends escaped character data (`raw` as it stands in the file, starting at
+// file offset `file_begin`) with its entities replaced. Each run between
+// entities is one real segment; each entity's replacement is a real segment
+// that starts at the entity's '&', so a diagnostic on "<" lands on "&lt;".
+// Unknown or malformed entities are kept verbatim.
+void append_escaped_text(VirtualTextBuilder& builder, std::string_view raw, uint32_t file_begin, std::string_view role,
+                         std::string_view object_name);
+
+// The unescaped text of an attribute value or character data (no positions).
+std::string unescape_xml(std::string_view raw);
+
+}  // namespace rung::containers

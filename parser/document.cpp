@@ -1,0 +1,127 @@
+#include "parser/document.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "parser/containers/read_container.hpp"
+#include "parser/diagnostic_codes.hpp"
+#include "parser/syntax_diagnostics.hpp"
+
+namespace rung {
+
+Document Document::from_bytes(std::string path, std::string_view bytes, const DocumentOptions& options) {
+  Document doc;
+  doc.path_ = std::move(path);
+  doc.build(bytes, options);
+  return doc;
+}
+
+std::optional<Document> Document::load(const std::filesystem::path& path, std::string* error,
+                                       const DocumentOptions& options) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (error) *error = fmt::format("{}: cannot open file", path.string());
+    return std::nullopt;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) {
+    if (error) *error = fmt::format("{}: read error", path.string());
+    return std::nullopt;
+  }
+  return from_bytes(path.string(), buffer.str(), options);
+}
+
+namespace {
+
+Diagnostic make(std::string_view code, Severity severity, TextRange range, std::string message, std::string help = {}) {
+  Diagnostic d;
+  d.code = std::string(code);
+  d.severity = severity;
+  d.range = range;
+  d.message = std::move(message);
+  d.help = std::move(help);
+  return d;
+}
+
+}  // namespace
+
+void Document::build(std::string_view bytes, const DocumentOptions& options) {
+  if (bytes.size() > options.max_bytes) {
+    file_lines_ = std::make_unique<source::LineIndex>(std::string_view());
+    diagnostics_.push_back(make(codes::kParseAborted, Severity::Error, {0, 0},
+                                fmt::format("file is {} MB; rung parses files up to {} MB", bytes.size() >> 20,
+                                            options.max_bytes >> 20),
+                                "split the file, or check that it really is PLC source"));
+    return;
+  }
+  *decoded_ = source::decode(bytes);
+  file_lines_ = std::make_unique<source::LineIndex>(decoded_->utf8);
+  if (decoded_->is_binary) {
+    diagnostics_.push_back(make(codes::kBinaryFile, Severity::Error, {0, 0}, "binary file, not PLC source text",
+                                "rung reads text files (.st, .il, .TcPOU, .EXP, ...)"));
+    return;
+  }
+  for (const auto& issue : decoded_->issues) {
+    diagnostics_.push_back(make(codes::kEncoding, Severity::Warning, {issue.offset, issue.offset + 1}, issue.message,
+                                "save the file as UTF-8"));
+  }
+
+  std::string tree_text;
+  auto kind = containers::detect_container(path_, decoded_->utf8);
+  if (kind == containers::ContainerKind::Unsupported) {
+    // A vendor object that holds no PLC source (e.g. a TwinCAT task object): nothing to parse.
+    return;
+  }
+  if (kind != containers::ContainerKind::None) {
+    container_ = containers::read_container(kind, path_, decoded_->utf8);
+    for (const auto& issue : container_->issues) {
+      diagnostics_.push_back(make(codes::kContainer, Severity::Error, {issue.offset, issue.offset}, issue.message));
+    }
+    tree_text = container_->virtual_text;
+  } else {
+    tree_text = decoded_->utf8;
+  }
+
+  tree_.emplace(SyntaxTree::parse(std::move(tree_text), options.parse));
+  if (tree_->aborted()) {
+    diagnostics_.push_back(make(codes::kParseAborted, Severity::Error, {0, 0},
+                                "parsing stopped: the file is too large or too deeply nested for rung's time limit",
+                                "split the file into smaller POUs"));
+    tree_.reset();
+    return;
+  }
+
+  SyntaxDiagnosticOptions syntax_options;
+  syntax_options.describe_position = [this](uint32_t offset) {
+    FilePosition p = position_of_tree_offset(offset);
+    return fmt::format("{}:{}", p.line, p.column);
+  };
+  for (Diagnostic& d : collect_syntax_diagnostics(*tree_, syntax_options)) {
+    d.range = {file_offset_of(d.range.begin), file_offset_of(d.range.end)};
+    if (d.range.end < d.range.begin) d.range.end = d.range.begin;
+    for (auto& label : d.labels) label.range = {file_offset_of(label.range.begin), file_offset_of(label.range.end)};
+    diagnostics_.push_back(std::move(d));
+  }
+  sort_diagnostics(diagnostics_);
+}
+
+uint32_t Document::file_offset_of(uint32_t tree_offset) const {
+  if (!container_) return tree_offset;
+  auto mapped = container_->to_file_offset(tree_offset);
+  return mapped ? *mapped : static_cast<uint32_t>(decoded_->utf8.size());
+}
+
+FilePosition Document::position_of_file_offset(uint32_t file_offset) const {
+  auto p = file_lines_->position_of(file_offset);
+  FilePosition out;
+  out.offset = file_offset;
+  out.line = p.line + 1;
+  out.column = p.char_column + 1;
+  out.utf16_column = p.utf16_column;
+  return out;
+}
+
+}  // namespace rung

@@ -1,0 +1,98 @@
+// Drives the real `rung` binary the way a user or a CI script does: exit codes, output formats.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "tests/support/test_paths.hpp"
+
+namespace rung {
+namespace {
+
+struct RunResult {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+RunResult run_rung(const std::string& args) {
+  auto dir = std::filesystem::temp_directory_path();
+  auto out = dir / "rung_cli_test.out";
+  auto err = dir / "rung_cli_test.err";
+  std::string cmd = "cd '" + test::source_dir().string() + "' && '" + test::rung_binary().string() + "' " + args +
+                    " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+  int status = std::system(cmd.c_str());
+  RunResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_file(out), test::read_file(err)};
+  return r;
+}
+
+TEST(Cli, Version) {
+  RunResult r = run_rung("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out.rfind("rung ", 0), 0u) << r.out;
+}
+
+TEST(Cli, HelpListsCommandsAndEachCommandHasHelp) {
+  RunResult r = run_rung("help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("parse"), std::string::npos);
+  RunResult p = run_rung("parse --help");
+  EXPECT_EQ(p.exit_code, 0);
+  EXPECT_NE(p.out.find("--tree"), std::string::npos);
+  EXPECT_NE(p.out.find("--format"), std::string::npos);
+  RunResult h = run_rung("help parse");
+  EXPECT_EQ(h.exit_code, 0);
+  EXPECT_EQ(h.out, p.out);
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run_rung("frobnicate").exit_code, 2);
+  EXPECT_EQ(run_rung("parse --format xml examples").exit_code, 2);
+  EXPECT_EQ(run_rung("parse").exit_code, 2);
+  RunResult missing = run_rung("parse no/such/dir");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("no/such/dir"), std::string::npos);
+}
+
+TEST(Cli, CleanProjectExitsZero) {
+  RunResult r = run_rung("parse examples/conveyor");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("0 errors"), std::string::npos) << r.err;
+}
+
+TEST(Cli, BrokenFileExitsOneWithFileLineColumnAndCaret) {
+  RunResult r = run_rung("parse --color never examples/broken");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("examples/broken/Mistakes.st:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error[S"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("^"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("\x1b["), std::string::npos) << "no colours when not on a terminal";
+  RunResult colored = run_rung("parse --color always examples/broken");
+  EXPECT_NE(colored.out.find("\x1b["), std::string::npos);
+}
+
+TEST(Cli, JsonOutputIsMachineReadable) {
+  RunResult r = run_rung("parse --format json examples/broken examples/conveyor");
+  EXPECT_EQ(r.exit_code, 1);
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_GE(j["files"].get<int>(), 7);
+  EXPECT_GE(j["errors"].get<int>(), 1);
+  ASSERT_FALSE(j["diagnostics"].empty());
+  const auto& d = j["diagnostics"][0];
+  EXPECT_EQ(d["file"], "examples/broken/Mistakes.st");
+  EXPECT_TRUE(d["start"]["line"].is_number());
+  EXPECT_TRUE(d["code"].get<std::string>().starts_with("S"));
+}
+
+TEST(Cli, TreeOutput) {
+  RunResult r = run_rung("parse --tree examples/conveyor/src/PLC_PRG.st");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("program_declaration [1:1-"), std::string::npos) << r.out.substr(0, 400);
+  EXPECT_NE(r.out.find("\"PLC_PRG\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rung

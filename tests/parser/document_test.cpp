@@ -1,0 +1,98 @@
+#include "parser/document.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/support/test_paths.hpp"
+
+namespace rung {
+namespace {
+
+bool has_code(const Document& doc, std::string_view code) {
+  for (const auto& d : doc.diagnostics())
+    if (d.code == code) return true;
+  return false;
+}
+
+TEST(Document, PlainFileParsesClean) {
+  Document doc = Document::from_bytes("a.st", "PROGRAM P\nVAR x : INT; END_VAR\nx := 1;\nEND_PROGRAM\n");
+  ASSERT_NE(doc.tree(), nullptr);
+  EXPECT_TRUE(doc.diagnostics().empty());
+  EXPECT_EQ(doc.file_offset_of(5), 5u);
+}
+
+TEST(Document, Utf8BomIsDroppedAndPositionsCountCharacters) {
+  Document doc = Document::from_bytes("a.st", "\xEF\xBB\xBFPROGRAM P\n(* \xC3\xA4\xC3\xB6 *) x := ;\nEND_PROGRAM\n");
+  EXPECT_TRUE(doc.had_bom());
+  ASSERT_FALSE(doc.diagnostics().empty());
+  FilePosition p = doc.position_of_file_offset(doc.diagnostics()[0].range.begin);
+  EXPECT_EQ(p.line, 2u);
+  // "(* äö *) x := ;" — the missing expression is reported right after ':=' (column 14 counting
+  // characters; it would be 16 counting bytes).
+  EXPECT_EQ(p.column, 14u);
+}
+
+TEST(Document, Cp1252FileIsDecoded) {
+  // OSCAT-style comment with a cp1252 'ä' (0xE4) and '€' (0x80).
+  Document doc = Document::from_bytes("a.st", "(* Z\xE4hler \x80 *)\nPROGRAM P\nEND_PROGRAM\n");
+  EXPECT_EQ(doc.encoding(), source::Encoding::Cp1252);
+  EXPECT_NE(doc.file_text().find("Z\xC3\xA4hler \xE2\x82\xAC"), std::string_view::npos);
+  EXPECT_FALSE(has_code(doc, "S001"));
+}
+
+TEST(Document, BinaryFileIsReportedNotParsed) {
+  static const char kPng[] = "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06";
+  std::string png(kPng, sizeof(kPng) - 1);
+  Document doc = Document::from_bytes("image.st", png);
+  EXPECT_EQ(doc.tree(), nullptr);
+  ASSERT_EQ(doc.diagnostics().size(), 1u);
+  EXPECT_EQ(doc.diagnostics()[0].code, "S009");
+}
+
+TEST(Document, TooLargeFileIsRefusedWithAClearMessage) {
+  DocumentOptions options;
+  options.max_bytes = 1000;
+  Document doc = Document::from_bytes("big.st", std::string(2000, ' '), options);
+  EXPECT_EQ(doc.tree(), nullptr);
+  ASSERT_EQ(doc.diagnostics().size(), 1u);
+  EXPECT_EQ(doc.diagnostics()[0].code, "S011");
+}
+
+TEST(Document, TwinCatDiagnosticsPointAtTheContainerLines) {
+  std::string xml =
+      "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+      "<TcPlcObject Version=\"1.1.0.1\">\n"
+      "  <POU Name=\"FB_A\" Id=\"{1}\">\n"
+      "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\n"
+      "VAR\n"
+      "  x : INT;\n"
+      "END_VAR\n"
+      "]]></Declaration>\n"
+      "    <Implementation>\n"
+      "      <ST><![CDATA[x := x + 1;\n"
+      "x := ;]]></ST>\n"
+      "    </Implementation>\n"
+      "  </POU>\n"
+      "</TcPlcObject>\n";
+  Document doc = Document::from_bytes("FB_A.TcPOU", xml);
+  ASSERT_NE(doc.container(), nullptr);
+  ASSERT_NE(doc.tree(), nullptr);
+  ASSERT_FALSE(doc.diagnostics().empty());
+  FilePosition p = doc.position_of_file_offset(doc.diagnostics()[0].range.begin);
+  EXPECT_EQ(p.line, 11u);  // "x := ;]]></ST>" is line 11 of the .TcPOU file
+  EXPECT_EQ(p.column, 5u);  // right after ':=', where the expression is missing
+}
+
+TEST(Document, ExampleProjectParsesClean) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(test::source_dir() / "examples/conveyor")) {
+    if (!entry.is_regular_file() || entry.path().extension() == ".md") continue;
+    std::string error;
+    auto doc = Document::load(entry.path(), &error);
+    ASSERT_TRUE(doc) << error;
+    EXPECT_TRUE(doc->diagnostics().empty()) << entry.path() << ": " << doc->diagnostics()[0].message;
+  }
+}
+
+}  // namespace
+}  // namespace rung
