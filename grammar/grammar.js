@@ -116,6 +116,39 @@ function pouContents($) {
   ];
 }
 
+/**
+ * The parts of a variable declaration before its closing ';'.
+ * @param {GrammarSymbols} $
+ * @return {Rule[]}
+ */
+function varDeclarationCore($) {
+  return [
+    optional(commaSep1(field('name', choice($.identifier, alias($._dotted_name, $.qualified_name))))),
+    optional(field('location', $.location)),
+    ':',
+    field('type', choice($._type_spec, alias($._inline_struct, $.struct_type))),
+    optional(field('edge', choice(kw('R_EDGE'), kw('F_EDGE')))),
+    optional(field('arguments', $.argument_list)),
+    optional(seq(
+      choice(':=', kwAs('REF=', 'REF=')),
+      field('value', $._initializer),
+    )),
+  ];
+}
+
+/**
+ * Declarations of a VAR block, STRUCT or UNION: each ends with ';' except
+ * perhaps the last.
+ * @param {GrammarSymbols} $
+ * @return {Rule[]}
+ */
+function declarationList($) {
+  return [
+    repeat(choice($.var_declaration, $.empty_declaration)),
+    optional(alias($._last_var_declaration, $.var_declaration)),
+  ];
+}
+
 module.exports = grammar({
   name: 'iec61131',
 
@@ -156,6 +189,8 @@ module.exports = grammar({
     [$.jmp_statement, $._il_operator],
     [$.label, $.il_label],
     [$._type_spec, $.subrange_type],
+    [$.label, $._reference],
+    [$.call_statement, $._reference],
   ],
 
   rules: {
@@ -183,6 +218,7 @@ module.exports = grammar({
       $.property_declaration,
       $.interface_declaration,
       $.action_declaration,
+      $.transition_declaration,
       $.class_declaration,
       $.namespace_declaration,
       $.using_directive,
@@ -260,6 +296,7 @@ module.exports = grammar({
       $.method_declaration,
       $.property_declaration,
       $.action_declaration,
+      $.transition_declaration,
     ),
 
     modifier: _ => choice(...MODIFIERS.map(kw)),
@@ -337,6 +374,19 @@ module.exports = grammar({
       optional(kw('END_ACTION')),
     )),
 
+    // A transition object of a TwinCAT/CODESYS SFC ("TRANSITION T:"): its body
+    // is either one boolean expression or a statement list.
+    transition_declaration: $ => prec.right(seq(
+      alias($._kw_transition, 'TRANSITION'),
+      field('name', $.identifier),
+      ':',
+      optional(choice(
+        prec.dynamic(1, seq(field('body', $._expression), optional(';'))),
+        field('body', $.statement_list),
+      )),
+      optional(seq(kw('END_TRANSITION'), optional(';'))),
+    )),
+
     namespace_declaration: $ => seq(
       alias($._kw_namespace, 'NAMESPACE'),
       field('name', $.qualified_name),
@@ -368,7 +418,7 @@ module.exports = grammar({
       ':',
       kw('STRUCT'),
       optional($.extends_clause),
-      repeat(choice($.var_declaration, $.empty_declaration)),
+      ...declarationList($),
       kw('END_STRUCT'),
       optional(seq(':=', field('value', $._initializer))),
       optional(';'),
@@ -377,7 +427,7 @@ module.exports = grammar({
     // STRUCT ... END_STRUCT written inside a variable declaration
     _inline_struct: $ => seq(
       kw('STRUCT'),
-      repeat(choice($.var_declaration, $.empty_declaration)),
+      ...declarationList($),
       kw('END_STRUCT'),
     ),
 
@@ -385,7 +435,7 @@ module.exports = grammar({
       field('name', $.identifier),
       ':',
       kw('UNION'),
-      repeat($.var_declaration),
+      ...declarationList($),
       kw('END_UNION'),
       optional(';'),
     ),
@@ -468,7 +518,7 @@ module.exports = grammar({
     var_block: $ => prec.right(seq(
       field('kind', choice(...VAR_KEYWORDS.map(kw))),
       repeat($.var_qualifier),
-      repeat(choice($.var_declaration, $.empty_declaration)),
+      ...declarationList($),
       kw('END_VAR'),
       optional(';'),
     )),
@@ -477,19 +527,11 @@ module.exports = grammar({
 
     var_qualifier: _ => choice(...VAR_QUALIFIERS.map(kw)),
 
-    var_declaration: $ => prec.right(seq(
-      optional(commaSep1(field('name', choice($.identifier, alias($._dotted_name, $.qualified_name))))),
-      optional(field('location', $.location)),
-      ':',
-      field('type', choice($._type_spec, alias($._inline_struct, $.struct_type))),
-      optional(field('edge', choice(kw('R_EDGE'), kw('F_EDGE')))),
-      optional(field('arguments', $.argument_list)),
-      optional(seq(
-        choice(':=', kwAs('REF=', 'REF=')),
-        field('value', $._initializer),
-      )),
-      optional(';'),
-    )),
+    // A declaration ends with ';'; only the last one of a block (right before
+    // END_VAR / END_STRUCT / END_UNION) may leave it out.
+    var_declaration: $ => seq(...varDeclarationCore($), ';'),
+
+    _last_var_declaration: $ => prec.right(seq(...varDeclarationCore($))),
 
     location: $ => seq(alias($._kw_at, 'AT'), field('address', $.direct_variable)),
 

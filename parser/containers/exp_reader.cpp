@@ -83,6 +83,7 @@ class ExpReader {
       note_unterminated("section runs to the end of the file");
     }
 
+    flatten_comments_where_not_nested();
     ContainerDocument doc = plain_document(virtual_, ContainerKind::CodesysExp);
     doc.objects = std::move(objects_);
     return doc;
@@ -275,6 +276,57 @@ class ExpReader {
     if (current_ >= objects_.size()) return;
     std::string& note = objects_[current_].note;
     note = note.empty() ? what : note + "; " + what;
+  }
+
+  // rung's grammar nests (* *) comments, as CODESYS V3 does. An object exported with
+  // @NESTEDCOMMENTS := 'No' closes a comment at its first '*)', so a '(*' inside such a comment
+  // would wrongly open a nested one. The '(' of every such inner '(*' is blanked in the virtual
+  // text (same length, so positions stay 1:1; consumers take comment text from the file text).
+  void flatten_comments_where_not_nested() {
+    for (size_t i = 0; i < objects_.size(); ++i) {
+      if (objects_[i].nested_comments) continue;
+      const uint32_t begin = objects_[i].file_offset;
+      uint32_t end = static_cast<uint32_t>(virtual_.size());
+      for (size_t j = i + 1; j < objects_.size(); ++j) {
+        if (objects_[j].file_offset > begin) {
+          end = objects_[j].file_offset;
+          break;
+        }
+      }
+      flatten_range(begin, end);
+    }
+  }
+
+  void flatten_range(uint32_t begin, uint32_t end) {
+    enum class State { Code, Quote, DoubleQuote, Block, Slash, Line } state = State::Code;
+    for (uint32_t k = begin; k < end; ++k) {
+      const char c = virtual_[k];
+      const char next = k + 1 < end ? virtual_[k + 1] : '\0';
+      switch (state) {
+        case State::Code:
+          if (c == '\'') state = State::Quote;
+          else if (c == '"') state = State::DoubleQuote;
+          else if (c == '(' && next == '*') state = State::Block, ++k;
+          else if (c == '/' && next == '*') state = State::Slash, ++k;
+          else if (c == '/' && next == '/') state = State::Line, ++k;
+          break;
+        case State::Quote:
+        case State::DoubleQuote:
+          if (c == '$') ++k;
+          else if ((c == '\'' && state == State::Quote) || (c == '"' && state == State::DoubleQuote)) state = State::Code;
+          break;
+        case State::Block:
+          if (c == '*' && next == ')') state = State::Code, ++k;
+          else if (c == '(' && next == '*') virtual_[k] = ' ';
+          break;
+        case State::Slash:
+          if (c == '*' && next == '/') state = State::Code, ++k;
+          break;
+        case State::Line:
+          if (c == '\n' || c == '\r') state = State::Code;
+          break;
+      }
+    }
   }
 
   void blank(const Line& line) { std::fill(virtual_.begin() + line.begin, virtual_.begin() + line.end, ' '); }

@@ -114,9 +114,9 @@ class TwinCatReader {
       for (const pugi::xml_node sub : element.children(tag)) {
         ContainerObject object = member(sub, kind);
         const std::string name = attribute(sub, "Name");
-        // The grammar has no transition-object form; an action header carries
-        // the transition's body (usually one boolean expression).
-        add_header(fmt::format("ACTION {}:\n", name), role + name);
+        // `ACTION name:` / `TRANSITION name:` headers: the grammar's object forms; a
+        // transition body is usually one boolean expression.
+        add_header(fmt::format("{} {}:\n", kind, name), role + name);
         add_implementation(sub, role + name, object);
         objects_.push_back(std::move(object));
       }

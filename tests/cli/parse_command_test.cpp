@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <string>
@@ -18,13 +19,18 @@ struct RunResult {
 };
 
 RunResult run_rung(const std::string& args) {
+  // CTest runs tests in parallel processes: every run gets its own output files.
+  static int counter = 0;
   auto dir = std::filesystem::temp_directory_path();
-  auto out = dir / "rung_cli_test.out";
-  auto err = dir / "rung_cli_test.err";
+  std::string stem = "rung_cli_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
+  auto out = dir / (stem + ".out");
+  auto err = dir / (stem + ".err");
   std::string cmd = "cd '" + test::source_dir().string() + "' && '" + test::rung_binary().string() + "' " + args +
                     " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
   int status = std::system(cmd.c_str());
   RunResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_file(out), test::read_file(err)};
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
   return r;
 }
 

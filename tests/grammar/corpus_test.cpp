@@ -22,6 +22,7 @@ struct CorpusCase {
   std::string input;
   std::string expected;
   bool skip = false;
+  bool expect_error = false;  // ':error' tests only assert that the input does not parse
 };
 
 bool is_rule(const std::string& line, char c) {
@@ -59,6 +60,7 @@ std::vector<CorpusCase> read_corpus(const std::filesystem::path& path) {
     c.name = header.empty() ? "" : header[0];
     for (const auto& h : header)
       if (h == ":skip") c.skip = true;
+      else if (h == ":error") c.expect_error = true;
     ++j;
     // Input runs to the last '---' line before the next header.
     size_t next = j;
@@ -143,6 +145,10 @@ TEST(GrammarCorpus, EveryCorpusTestPasses) {
       ++total;
       SyntaxTree tree = SyntaxTree::parse(c.input);
       ASSERT_FALSE(tree.aborted());
+      if (c.expect_error) {
+        EXPECT_TRUE(tree.root().has_error()) << c.file << ": " << c.name << " should not parse";
+        continue;
+      }
       bool keep_fields = c.expected.find(": (") != std::string::npos;
       std::string actual = normalize(print_sexp(tree.root()), keep_fields);
       std::string expected = normalize(c.expected, keep_fields);

@@ -96,3 +96,27 @@ TEST(Document, ExampleProjectParsesClean) {
 
 }  // namespace
 }  // namespace rung
+
+namespace rung {
+namespace {
+
+TEST(Document, ExpWithNestedCommentsOffParsesLikeCodesys) {
+  // OSCAT-style object exported with nested comments off: "(* (* x *)" is ONE comment.
+  std::string exp =
+      "(* @NESTEDCOMMENTS := 'No' *)\r\n"
+      "(* @PATH := '\\/lib' *)\r\n"
+      "FUNCTION F_Add : INT\r\n"
+      "VAR_INPUT a, b : INT; END_VAR\r\n"
+      "(* @END_DECLARATION := '0' *)\r\n"
+      "(* old code: (* F_Add := a - b; *)\r\n"
+      "F_Add := a + b;\r\n"
+      "END_FUNCTION\r\n";
+  Document doc = Document::from_bytes("LIB.EXP", exp);
+  ASSERT_NE(doc.container(), nullptr);
+  EXPECT_TRUE(doc.diagnostics().empty()) << doc.diagnostics()[0].message;
+  // The file text itself is untouched: only the parser's copy was adjusted.
+  EXPECT_NE(doc.file_text().find("(* old code: (* F_Add"), std::string_view::npos);
+}
+
+}  // namespace
+}  // namespace rung

@@ -1,6 +1,7 @@
 #include "parser/file_walk.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "tests/support/test_paths.hpp"
 
@@ -22,7 +23,7 @@ TEST(FileWalk, KnowsEveryFileKindCaseInsensitively) {
 }
 
 TEST(FileWalk, WalksFoldersSortedAndSkipsHiddenAndBuild) {
-  auto root = std::filesystem::temp_directory_path() / "rung_file_walk_test";
+  auto root = std::filesystem::temp_directory_path() / ("rung_file_walk_test_" + std::to_string(getpid()));
   std::filesystem::remove_all(root);
   test::write_file(root / "b.st", "");
   test::write_file(root / "a/c.TcPOU", "");

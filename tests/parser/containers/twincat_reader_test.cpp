@@ -54,7 +54,7 @@ TEST(TwinCatReader, FunctionBlockVirtualTextIsWhatTheGrammarExpects) {
       "ACTION A_Reset:\n"
       "nState := 0;\r\n"
       "fSpeed := 0;\n"
-      "ACTION T_Done:\n"
+      "TRANSITION T_Done:\n"
       "nState = 2";
   EXPECT_EQ(doc.virtual_text, expected);
 }
@@ -92,7 +92,7 @@ TEST(TwinCatReader, SegmentsCarryRoles) {
   EXPECT_EQ(role_at("P_Speed := fSpeed"), "property P_Speed/get/implementation");
   EXPECT_EQ(role_at("SET\n"), "property P_Speed/set");
   EXPECT_EQ(role_at("ACTION A_Reset"), "action A_Reset");
-  EXPECT_EQ(role_at("ACTION T_Done"), "transition T_Done");
+  EXPECT_EQ(role_at("TRANSITION T_Done"), "transition T_Done");
   EXPECT_EQ(role_at("nState = 2"), "transition T_Done");
   for (const Segment& s : doc.segments) EXPECT_EQ(s.object_name, "FB_Motor");
 }
