@@ -14,12 +14,40 @@ std::string_view SyntaxNode::text() const {
 }
 
 SyntaxNode SyntaxNode::child_by_field(std::string_view field) const {
-  return wrap(ts_node_child_by_field_name(node_, field.data(), static_cast<uint32_t>(field.size())));
+  std::vector<SyntaxNode> all = children_by_field(field);
+  return all.empty() ? SyntaxNode() : all.front();
 }
 
+// Field names come from a tree cursor: ts_node_field_name_for_child of the tree-sitter 0.20
+// runtime (Debian 12) misattributes fields when hidden or extra nodes precede a child.
 std::string_view SyntaxNode::field_name_of_child(uint32_t index) const {
-  const char* name = ts_node_field_name_for_child(node_, index);
-  return name ? std::string_view(name) : std::string_view();
+  TSTreeCursor cursor = ts_tree_cursor_new(node_);
+  std::string_view name;
+  if (ts_tree_cursor_goto_first_child(&cursor)) {
+    for (uint32_t i = 0; i < index; ++i) {
+      if (!ts_tree_cursor_goto_next_sibling(&cursor)) {
+        ts_tree_cursor_delete(&cursor);
+        return {};
+      }
+    }
+    const char* field = ts_tree_cursor_current_field_name(&cursor);
+    if (field) name = field;
+  }
+  ts_tree_cursor_delete(&cursor);
+  return name;
+}
+
+std::vector<SyntaxNode> SyntaxNode::children_by_field(std::string_view field) const {
+  std::vector<SyntaxNode> out;
+  TSTreeCursor cursor = ts_tree_cursor_new(node_);
+  if (ts_tree_cursor_goto_first_child(&cursor)) {
+    do {
+      const char* name = ts_tree_cursor_current_field_name(&cursor);
+      if (name && field == name) out.push_back(wrap(ts_tree_cursor_current_node(&cursor)));
+    } while (ts_tree_cursor_goto_next_sibling(&cursor));
+  }
+  ts_tree_cursor_delete(&cursor);
+  return out;
 }
 
 std::vector<SyntaxNode> SyntaxNode::children_of_kind(std::string_view kind) const {

@@ -47,7 +47,9 @@ class SyntaxNode {
   SyntaxNode child(uint32_t index) const { return wrap(ts_node_child(node_, index)); }
   uint32_t named_child_count() const { return ts_node_named_child_count(node_); }
   SyntaxNode named_child(uint32_t index) const { return wrap(ts_node_named_child(node_, index)); }
+  // The first / every child under `field` (e.g. "name"). Cursor-based, see syntax_tree.cpp.
   SyntaxNode child_by_field(std::string_view field) const;
+  std::vector<SyntaxNode> children_by_field(std::string_view field) const;
   // The field name under which child `index` hangs in this node, or empty.
   std::string_view field_name_of_child(uint32_t index) const;
   // All named children with the given kind.

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <vector>
 
 namespace rung {
 namespace {
@@ -33,44 +32,49 @@ std::string quoted(std::string_view text) {
 std::string print_outline(SyntaxNode root, const TreePrintOptions& options) {
   std::string out;
   if (!root) return out;
-  struct Item {
-    SyntaxNode node;
-    std::string_view field;
-    uint32_t depth;
-  };
-  std::vector<Item> stack{{root, {}, 0}};
-  while (!stack.empty()) {
-    Item item = stack.back();
-    stack.pop_back();
-    SyntaxNode n = item.node;
-    out.append(item.depth * 2, ' ');
-    if (!item.field.empty()) fmt::format_to(std::back_inserter(out), "{}: ", item.field);
-    if (n.is_missing()) {
-      fmt::format_to(std::back_inserter(out), "MISSING {}", n.kind());
-    } else if (n.is_named()) {
-      out += n.kind();
-    } else {
-      out += quoted(n.kind());
+  // A cursor walk: iterative (deep trees are fine) and it knows each child's field name.
+  TSTreeCursor cursor = ts_tree_cursor_new(root.raw());
+  uint32_t depth = 0;
+  while (true) {
+    SyntaxNode n(ts_tree_cursor_current_node(&cursor), root.source());
+    if (n.is_named() || n.is_missing() || options.include_anonymous) {
+      out.append(depth * 2, ' ');
+      const char* field = depth > 0 ? ts_tree_cursor_current_field_name(&cursor) : nullptr;
+      if (field) fmt::format_to(std::back_inserter(out), "{}: ", field);
+      if (n.is_missing()) {
+        fmt::format_to(std::back_inserter(out), "MISSING {}", n.kind());
+      } else if (n.is_named()) {
+        out += n.kind();
+      } else {
+        out += quoted(n.kind());
+      }
+      if (options.describe_position) {
+        fmt::format_to(std::back_inserter(out), " [{}-{}]", options.describe_position(n.begin()),
+                       options.describe_position(n.end()));
+      } else {
+        fmt::format_to(std::back_inserter(out), " [{}-{}]", n.begin(), n.end());
+      }
+      if (options.include_text && n.named_child_count() == 0 && n.is_named() && !n.is_missing()) {
+        out += ' ';
+        out += quoted(n.text());
+      }
+      out += '\n';
     }
-    if (options.describe_position) {
-      fmt::format_to(std::back_inserter(out), " [{}-{}]", options.describe_position(n.begin()),
-                     options.describe_position(n.end()));
-    } else {
-      fmt::format_to(std::back_inserter(out), " [{}-{}]", n.begin(), n.end());
+    if (ts_tree_cursor_goto_first_child(&cursor)) {
+      ++depth;
+      continue;
     }
-    bool leaf = n.named_child_count() == 0;
-    if (options.include_text && leaf && n.is_named() && !n.is_missing()) {
-      out += ' ';
-      out += quoted(n.text());
+    bool done = false;
+    while (!ts_tree_cursor_goto_next_sibling(&cursor)) {
+      if (depth == 0 || !ts_tree_cursor_goto_parent(&cursor)) {
+        done = true;
+        break;
+      }
+      --depth;
     }
-    out += '\n';
-    uint32_t count = n.child_count();
-    for (uint32_t i = count; i-- > 0;) {
-      SyntaxNode c = n.child(i);
-      if (!c.is_named() && !c.is_missing() && !options.include_anonymous) continue;
-      stack.push_back({c, n.field_name_of_child(i), item.depth + 1});
-    }
+    if (done || depth == 0) break;
   }
+  ts_tree_cursor_delete(&cursor);
   return out;
 }
 

@@ -387,6 +387,17 @@
 ((identifier) @variable.builtin
   (#any-of? @variable.builtin "THIS" "this" "This" "SUPER" "super" "Super"))
 
+; Naming conventions of CODESYS and TwinCAT projects: E_Xxx.Value is an
+; enumeration value, GVL_Xxx.name a variable of a global variable list.
+((member_expression
+  object: (identifier) @type
+  member: (identifier) @constant)
+  (#match? @type "^E_"))
+
+((member_expression
+  object: (identifier) @module)
+  (#match? @module "^GVL"))
+
 ; ---------------------------------------------------------------------------
 ; Functions and methods
 ; ---------------------------------------------------------------------------
@@ -474,11 +485,16 @@
 (sfc_transition
   name: (identifier) @label)
 
+; FROM S1 TO S2, FROM (S1, S2) TO S3: the step lists. (A field query such as
+; `to: (identifier)` misses the names of a parenthesised list.)
 (sfc_transition
-  from: (identifier) @label)
-
-(sfc_transition
-  to: (identifier) @label)
+  [
+    "FROM"
+    "TO"
+    ","
+  ]
+  .
+  (identifier) @label)
 
 (sfc_action
   name: (identifier) @function.call)

@@ -174,7 +174,11 @@ static bool scan_pragma_content(TSLexer *lexer, const bool *valid_symbols) {
   if (!valid_symbols[kind]) return false;
 
   /* Up to the closing brace; quoted strings may hold a brace, and Beremiz
-   * inline C code "{{ ... }}" may hold balanced braces. */
+   * inline C code "{{ ... }}" may hold balanced braces. The quoted values of
+   * attributes may span lines ({attribute 'pytmc' := '<newline> pv: X ...'});
+   * elsewhere a quote ends at the end of its line (an apostrophe in a
+   * message such as {warning 'don't'} must not swallow the file). */
+  bool multiline_quotes = kind == ATTRIBUTE_PRAGMA;
   unsigned depth = 0;
   while (!lexer->eof(lexer)) {
     int32_t c = lexer->lookahead;
@@ -187,7 +191,8 @@ static bool scan_pragma_content(TSLexer *lexer, const bool *valid_symbols) {
     if (c == '\'' || c == '"') {
       int32_t quote = c;
       advance(lexer);
-      while (!lexer->eof(lexer) && lexer->lookahead != quote && !is_newline(lexer->lookahead)) {
+      while (!lexer->eof(lexer) && lexer->lookahead != quote &&
+             (multiline_quotes || !is_newline(lexer->lookahead))) {
         if (lexer->lookahead == '$') advance(lexer);
         if (!lexer->eof(lexer)) advance(lexer);
       }
