@@ -7,6 +7,7 @@
 
 #include "bench/generated_source.hpp"
 #include "parser/document.hpp"
+#include "parser/parallel_load.hpp"
 #include "parser/source/decode.hpp"
 #include "parser/syntax_tree.hpp"
 
@@ -96,5 +97,37 @@ void BM_DecodeCp1252(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * text.size()));
 }
 BENCHMARK(BM_DecodeCp1252)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+namespace {
+
+// `rung parse` of a whole project: 200 generated files of ~500 lines each, read from disk,
+// decoded, parsed and checked for syntax errors, on state.range(0) threads.
+void BM_ParseProjectFromDisk(benchmark::State& state) {
+  static std::vector<std::filesystem::path> files;
+  static size_t bytes = 0;
+  if (files.empty()) {
+    auto dir = std::filesystem::temp_directory_path() / "rung_bench_project";
+    std::filesystem::create_directories(dir);
+    for (unsigned i = 0; i < 200; ++i) {
+      auto path = dir / ("FB_" + std::to_string(i) + ".st");
+      std::string text = rung::bench::generate_st(500, i + 1);
+      std::ofstream(path, std::ios::binary) << text;
+      files.push_back(path);
+      bytes += text.size();
+    }
+  }
+  for (auto _ : state) {
+    size_t diagnostics = 0;
+    rung::load_documents_in_order(files, static_cast<unsigned>(state.range(0)), [&](rung::LoadedDocument& d) {
+      if (d.document) diagnostics += d.document->diagnostics().size();
+    });
+    benchmark::DoNotOptimize(diagnostics);
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * bytes));
+  state.counters["files"] = static_cast<double>(files.size());
+}
+BENCHMARK(BM_ParseProjectFromDisk)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
