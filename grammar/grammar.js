@@ -111,7 +111,8 @@ function commaSep(rule) {
  */
 function pouContents($) {
   return [
-    repeat(choice($.var_block, $._member)),
+    // OpenPCS declares POU-local types among the variable blocks
+    repeat(choice($.var_block, $.type_declaration, $._member)),
     optional(seq(field('body', $._body), repeat($._member))),
   ];
 }
@@ -128,7 +129,7 @@ function varDeclarationCore($) {
     ':',
     field('type', choice($._type_spec, alias($._inline_struct, $.struct_type))),
     optional(field('edge', choice(kw('R_EDGE'), kw('F_EDGE')))),
-    optional(field('arguments', $.argument_list)),
+    optional(field('arguments', choice($.argument_list, $.argument_lists))),
     optional(seq(
       choice(':=', kwAs('REF=', 'REF=')),
       field('value', $._initializer),
@@ -191,6 +192,7 @@ module.exports = grammar({
     [$._type_spec, $.subrange_type],
     [$.label, $._reference],
     [$.call_statement, $._reference],
+    [$._reference, $.var_declaration, $.label, $.il_label],
   ],
 
   rules: {
@@ -208,7 +210,17 @@ module.exports = grammar({
       $.sfc_network,
       // declaration lines without their VAR block (fragments)
       prec.dynamic(-2, $.var_declaration),
+      // a bare expression (manual examples listing literals or addresses one
+      // per line): the last resort, whatever else fits wins
+      $.expression_fragment,
     ),
+
+    // Only directly in source_file, never in a POU body (where a bare
+    // expression stays a syntax error).
+    expression_fragment: $ => prec.dynamic(-10, seq(
+      field('value', $._expression),
+      optional(';'),
+    )),
 
     _declaration_item: $ => choice(
       $.program_declaration,
@@ -262,7 +274,7 @@ module.exports = grammar({
       field('name', $.identifier),
       optional(field('type_parameters', $.generic_parameters)),
       optional(seq(':', field('type', $._type_spec))),
-      repeat($.var_block),
+      repeat(choice($.var_block, $.type_declaration)),
       optional(field('body', $._body)),
       optional(kw('END_FUNCTION')),
     )),
@@ -533,6 +545,10 @@ module.exports = grammar({
 
     _last_var_declaration: $ => prec.right(seq(...varDeclarationCore($))),
 
+    // FB_init arguments of each element of an array of function blocks:
+    // aFb : ARRAY[0..1] OF FB_X[(a := 1), (a := 2)];
+    argument_lists: $ => seq('[', commaSep1($.argument_list), ']'),
+
     location: $ => seq(alias($._kw_at, 'AT'), field('address', $.direct_variable)),
 
     _initializer: $ => choice(
@@ -744,6 +760,7 @@ module.exports = grammar({
     _primary_expression: $ => choice(
       $._reference,
       $.parenthesized_expression,
+      alias($._parenthesized_member, $.member_expression),
       $.struct_initializer,
       $.array_initializer,
       $._literal,
@@ -762,6 +779,14 @@ module.exports = grammar({
     _postfix_target: $ => $._reference,
 
     parenthesized_expression: $ => seq('(', $._expression, ')'),
+
+    // Bit or member of a parenthesized value, (a OR b).0: a value only, never
+    // assigned (a statement never starts with "(").
+    _parenthesized_member: $ => prec(PREC.POSTFIX, seq(
+      field('object', $.parenthesized_expression),
+      '.',
+      field('member', choice($.identifier, $.integer_literal)),
+    )),
 
     member_expression: $ => prec(PREC.POSTFIX, seq(
       field('object', $._postfix_target),
@@ -946,7 +971,8 @@ module.exports = grammar({
       kw('TO'),
       field('to', $._step_list),
       choice(
-        seq(':=', field('condition', $._expression), ';'),
+        // IEC 61131-3 closes this form with END_TRANSITION too; CODESYS does not
+        seq(':=', field('condition', $._expression), ';', optional(seq(kw('END_TRANSITION'), optional(';')))),
         seq(':', optional(field('body', choice($.statement_list, $.il_body))), kw('END_TRANSITION'), optional(';')),
       ),
     )),

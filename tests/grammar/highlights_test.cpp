@@ -1,6 +1,6 @@
 // Runs grammar/queries/highlights.scm over tests/grammar/highlights_golden.st with the committed
 // parser and compares every capture with tests/grammar/highlights_golden.expected (produced by
-// grammar/queries/update-highlight-golden.sh with the tree-sitter CLI). So a grammar change that
+// scripts/grammar/update-highlight-golden.sh with the tree-sitter CLI). So a grammar change that
 // silently changes what editors highlight fails CI.
 #include <gtest/gtest.h>
 #include <tree_sitter/api.h>

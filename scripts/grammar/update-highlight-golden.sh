@@ -2,8 +2,8 @@
 # Regenerates tests/grammar/highlights_golden.expected from tests/grammar/highlights_golden.st.
 #
 # Usage (from anywhere in the checkout):
-#   grammar/queries/update-highlight-golden.sh           rewrite the expected file
-#   grammar/queries/update-highlight-golden.sh --check   compare only; exit 1 on a difference
+#   scripts/grammar/update-highlight-golden.sh           rewrite the expected file
+#   scripts/grammar/update-highlight-golden.sh --check   compare only; exit 1 on a difference
 #
 # Needs the tree-sitter CLI (scripts/regen-grammar installs the pinned one into ~/.cargo/bin)
 # and python3. The CLI compiles grammar/src on first use, so the captures are those of the
@@ -86,7 +86,7 @@ if [ "${1:-}" = "--check" ]; then
     echo "update-highlight-golden: $(wc -l <"$expected") captures match"
     exit 0
   fi
-  echo "update-highlight-golden: captures differ; run grammar/queries/update-highlight-golden.sh" >&2
+  echo "update-highlight-golden: captures differ; run scripts/grammar/update-highlight-golden.sh" >&2
   exit 1
 fi
 
