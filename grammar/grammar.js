@@ -192,37 +192,83 @@ module.exports = grammar({
     [$._type_spec, $.subrange_type],
     [$.label, $._reference],
     [$.call_statement, $._reference],
-    [$._reference, $.var_declaration, $.label, $.il_label],
+    [$._postfix_target, $._primary_expression],
+    [$._top_level_item, $._closed_item_and_fragments],
   ],
 
   rules: {
     // -----------------------------------------------------------------------
     // Top level
     // -----------------------------------------------------------------------
-    source_file: $ => repeat($._top_level_item),
+    // Bare expression lines (manual examples listing literals or addresses
+    // one per line) may start the file or follow an item that is closed by
+    // its own last token (END_VAR, END_TYPE, ';' of a declaration line, ...);
+    // never a POU, a statement list or IL, which may end without a closing
+    // keyword: error recovery in a POU body must not find a cheap way out.
+    source_file: $ => seq(
+      repeat($.expression_fragment),
+      repeat(choice(
+        $._top_level_item,
+        $._closed_item_and_fragments,
+      )),
+    ),
+
+    _closed_item_and_fragments: $ => prec.right(seq(
+      $._closed_top_level_item,
+      repeat1($.expression_fragment),
+    )),
 
     _top_level_item: $ => choice(
-      $._declaration_item,
-      $.configuration_declaration,
-      $.resource_declaration,
+      $._pou_item,
+      $._closed_top_level_item,
       alias($._top_level_statements, $.statement_list),
       $.il_body,
       $.sfc_network,
-      // declaration lines without their VAR block (fragments)
-      prec.dynamic(-2, $.var_declaration),
-      // a bare expression (manual examples listing literals or addresses one
-      // per line): the last resort, whatever else fits wins
-      $.expression_fragment,
     ),
 
-    // Only directly in source_file, never in a POU body (where a bare
-    // expression stays a syntax error).
-    expression_fragment: $ => prec.dynamic(-10, seq(
-      field('value', $._expression),
-      optional(';'),
+    _closed_top_level_item: $ => choice(
+      $.configuration_declaration,
+      $.resource_declaration,
+      $.using_directive,
+      $.type_declaration,
+      $.var_block,
+      // declaration lines without their VAR block (fragments)
+      prec.dynamic(-2, $.var_declaration),
+    ),
+
+    // An expression alone on its line, perhaps closed by ';'. Only directly
+    // in source_file, never in a POU body (where a bare expression stays a
+    // syntax error). The end of the line is the IL one (the external scanner
+    // tells it), so that the fragment never runs into the next line.
+    expression_fragment: $ => prec.dynamic(-10, choice(
+      seq(field('value', $._expression), $._il_newline),
+      // "f();" is a call statement, never a fragment
+      seq(field('value', $._fragment_expression), ';'),
     )),
 
+    _fragment_expression: $ => choice(
+      $.binary_expression,
+      $.unary_expression,
+      $.identifier,
+      $.direct_variable,
+      $.member_expression,
+      $.index_expression,
+      $.dereference_expression,
+      $.parenthesized_expression,
+      alias($._parenthesized_member, $.member_expression),
+      $.struct_initializer,
+      $.array_initializer,
+      $._literal,
+    ),
+
     _declaration_item: $ => choice(
+      $._pou_item,
+      $.using_directive,
+      $.type_declaration,
+      $.var_block,
+    ),
+
+    _pou_item: $ => choice(
       $.program_declaration,
       $.function_declaration,
       $.function_block_declaration,
@@ -233,9 +279,6 @@ module.exports = grammar({
       $.transition_declaration,
       $.class_declaration,
       $.namespace_declaration,
-      $.using_directive,
-      $.type_declaration,
-      $.var_block,
     ),
 
     // {attribute 'x' := 'y'}, {IF defined(x)}, {warning '...'}, {region "x"}, ...

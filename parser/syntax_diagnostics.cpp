@@ -372,7 +372,8 @@ class Collector {
       bool after_else;
     };
     std::vector<Open> open;
-    SyntaxNode else_if;  // first ELSE IF pair seen
+    SyntaxNode else_if;  // the ELSE of the first ELSE IF pair seen
+    SyntaxNode else_if_if;  // ... and its IF
     SyntaxNode pou_end;  // an END_PROGRAM/END_FUNCTION_BLOCK/... reached while blocks were open
     for (size_t i = 0; i < leaves.size(); ++i) {
       SyntaxNode leaf = leaves[i];
@@ -399,7 +400,10 @@ class Collector {
       if (kw.empty()) continue;
       if (const BlockRule* rule = block_rule(kw)) {
         bool after_else = i > 0 && keyword_of(leaves[i - 1]) == "ELSE" && kw == "IF";
-        if (after_else && !else_if) else_if = leaves[i - 1];
+        if (after_else && !else_if) {
+          else_if = leaves[i - 1];
+          else_if_if = leaf;
+        }
         open.push_back({rule, leaf, false, after_else});
         continue;
       }
@@ -423,9 +427,7 @@ class Collector {
       // An unclosed VAR block next to an unclosed statement is an echo of the statement.
       if (o.rule->closer == "END_VAR" && open.size() > 1) continue;
       if (else_if && !else_if_reported && o.rule->opener == "IF") {
-        SyntaxNode if_kw = else_if.next_sibling();
-        uint32_t end = if_kw ? if_kw.end() : else_if.end() + 3;
-        add(codes::kElseIf, {else_if.begin(), end}, "unexpected 'ELSE IF' — did you mean ELSIF?",
+        add(codes::kElseIf, {else_if.begin(), else_if_if.end()}, "unexpected 'ELSE IF' — did you mean ELSIF?",
             "write ELSIF; 'ELSE IF' opens a nested IF that needs its own END_IF");
         else_if_reported = true;
         continue;
