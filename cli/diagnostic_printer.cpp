@@ -37,8 +37,10 @@ void append_excerpt(std::string& out, const Document& doc, const FilePosition& p
     shown += static_cast<char>(c);
     if (!lead) continue;
     char pad = c == '\t' ? '\t' : ' ';
-    if (i < mark_begin) marks += pad;
-    else if (i < mark_end) marks += '^';
+    if (i < mark_begin)
+      marks += pad;
+    else if (i < mark_end)
+      marks += '^';
   }
   if (mark_end <= mark_begin) marks += '^';
   fmt::format_to(std::back_inserter(out), "{} {}|{}\n", gutter, style.blue(), style.reset());
@@ -65,7 +67,8 @@ std::string render_human(const Document& doc, const Diagnostic& d, const Style& 
                    lp.column);
     append_excerpt(out, doc, lp, label.range.end, label.message, style, style.cyan());
   }
-  if (!d.help.empty()) fmt::format_to(std::back_inserter(out), "  {}= help{}: {}\n", style.green(), style.reset(), d.help);
+  if (!d.help.empty())
+    fmt::format_to(std::back_inserter(out), "  {}= help{}: {}\n", style.green(), style.reset(), d.help);
   return out;
 }
 
@@ -84,7 +87,8 @@ nlohmann::json render_json(const Document& doc, const Diagnostic& d) {
   if (!d.labels.empty()) {
     nlohmann::json labels = nlohmann::json::array();
     for (const auto& label : d.labels) {
-      labels.push_back({{"message", label.message}, {"start", position(label.range.begin)}, {"end", position(label.range.end)}});
+      labels.push_back(
+          {{"message", label.message}, {"start", position(label.range.begin)}, {"end", position(label.range.end)}});
     }
     j["labels"] = std::move(labels);
   }
@@ -92,8 +96,10 @@ nlohmann::json render_json(const Document& doc, const Diagnostic& d) {
 }
 
 void Tally::add(const Diagnostic& d) {
-  if (d.severity == Severity::Error) ++errors;
-  else if (d.severity == Severity::Warning) ++warnings;
+  if (d.severity == Severity::Error)
+    ++errors;
+  else if (d.severity == Severity::Warning)
+    ++warnings;
 }
 
 std::string Tally::summary() const {

@@ -1,6 +1,5 @@
 // The `rung` command: each subcommand is a thin layer over the libraries (architecture rule 1).
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <string>
 
@@ -24,8 +23,7 @@ int main(int argc, char** argv) {
   rung::cli::ParseCommandOptions parse_options;
   std::string format_text = "human";
   CLI::App* parse = app.add_subcommand("parse", "Parse files and folders; print syntax errors (and trees)");
-  parse->add_option("paths", parse_options.paths, "Files or folders (folders are searched recursively)")
-      ->required();
+  parse->add_option("paths", parse_options.paths, "Files or folders (folders are searched recursively)")->required();
   parse->add_flag("--tree", parse_options.tree, "Print the syntax tree of each file");
   parse->add_option("--format", format_text, "Output format")->check(CLI::IsMember({"human", "json"}));
   parse->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));

@@ -55,7 +55,8 @@ int run_parse_command(const ParseCommandOptions& options, std::FILE* out, std::F
           FilePosition p = doc.position_of_tree_offset(offset);
           return fmt::format("{}:{}", p.line, p.column);
         };
-        fmt::print(out, "{}{}{}\n{}", style.bold(), doc.path(), style.reset(), print_outline(doc.tree()->root(), tree_options));
+        fmt::print(out, "{}{}{}\n{}", style.bold(), doc.path(), style.reset(),
+                   print_outline(doc.tree()->root(), tree_options));
       }
     }
   });

@@ -17,7 +17,7 @@ struct ParseCommandOptions {
   bool tree = false;
   OutputFormat format = OutputFormat::Human;
   ColorChoice color = ColorChoice::Auto;
-  bool quiet = false;  // no closing summary line
+  bool quiet = false;    // no closing summary line
   unsigned threads = 0;  // 0: one per core
 };
 

@@ -7,14 +7,20 @@
 namespace rung::cli {
 
 bool parse_color_choice(std::string_view text, ColorChoice* out) {
-  if (text == "auto") *out = ColorChoice::Auto;
-  else if (text == "always") *out = ColorChoice::Always;
-  else if (text == "never") *out = ColorChoice::Never;
-  else return false;
+  if (text == "auto")
+    *out = ColorChoice::Auto;
+  else if (text == "always")
+    *out = ColorChoice::Always;
+  else if (text == "never")
+    *out = ColorChoice::Never;
+  else
+    return false;
   return true;
 }
 
-bool is_terminal(std::FILE* stream) { return isatty(fileno(stream)) == 1; }
+bool is_terminal(std::FILE* stream) {
+  return isatty(fileno(stream)) == 1;
+}
 
 bool use_color(ColorChoice choice, std::FILE* stream) {
   if (choice == ColorChoice::Always) return true;

@@ -18,11 +18,16 @@ bool pou_kind_of(std::string_view node_kind, PouKind* out) {
     PouKind kind;
   };
   static constexpr Row kRows[] = {
-      {"program_declaration", PouKind::Program},     {"function_declaration", PouKind::Function},
-      {"function_block_declaration", PouKind::FunctionBlock}, {"method_declaration", PouKind::Method},
-      {"property_declaration", PouKind::Property},   {"property_accessor", PouKind::PropertyAccessor},
-      {"interface_declaration", PouKind::Interface}, {"action_declaration", PouKind::Action},
-      {"transition_declaration", PouKind::Transition}, {"class_declaration", PouKind::Class},
+      {"program_declaration", PouKind::Program},
+      {"function_declaration", PouKind::Function},
+      {"function_block_declaration", PouKind::FunctionBlock},
+      {"method_declaration", PouKind::Method},
+      {"property_declaration", PouKind::Property},
+      {"property_accessor", PouKind::PropertyAccessor},
+      {"interface_declaration", PouKind::Interface},
+      {"action_declaration", PouKind::Action},
+      {"transition_declaration", PouKind::Transition},
+      {"class_declaration", PouKind::Class},
   };
   for (const auto& row : kRows) {
     if (row.node == node_kind) {
@@ -137,7 +142,9 @@ std::vector<VarDeclaration> TypeDeclaration::fields() const {
   return out;
 }
 
-std::vector<SyntaxNode> TypeDeclaration::enum_values() const { return node_.children_of_kind("enum_value"); }
+std::vector<SyntaxNode> TypeDeclaration::enum_values() const {
+  return node_.children_of_kind("enum_value");
+}
 
 struct OutlineBuilder {
   Outline out;
@@ -176,7 +183,8 @@ struct OutlineBuilder {
         add_types(c);
       } else if (k == "var_block") {
         VarBlock block(c);
-        if (block.section() == VarSection::Global || block.section() == VarSection::Config) out.global_blocks.push_back(block);
+        if (block.section() == VarSection::Global || block.section() == VarSection::Config)
+          out.global_blocks.push_back(block);
       } else if (k == "namespace_declaration") {
         visit_container(c);
         owner = kNone;
@@ -191,10 +199,14 @@ struct OutlineBuilder {
     for (uint32_t i = 0; i < n; ++i) {
       SyntaxNode t = type_block.named_child(i);
       std::string_view k = t.kind();
-      if (k == "struct_type") out.types.emplace_back(t, TypeKind::Struct);
-      else if (k == "enum_type") out.types.emplace_back(t, TypeKind::Enum);
-      else if (k == "union_type") out.types.emplace_back(t, TypeKind::Union);
-      else if (k == "alias_type") out.types.emplace_back(t, TypeKind::Alias);
+      if (k == "struct_type")
+        out.types.emplace_back(t, TypeKind::Struct);
+      else if (k == "enum_type")
+        out.types.emplace_back(t, TypeKind::Enum);
+      else if (k == "union_type")
+        out.types.emplace_back(t, TypeKind::Union);
+      else if (k == "alias_type")
+        out.types.emplace_back(t, TypeKind::Alias);
     }
   }
 };

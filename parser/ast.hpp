@@ -38,7 +38,7 @@ class VarDeclaration {
   std::vector<SyntaxNode> names() const { return node_.children_by_field("name"); }
   SyntaxNode type() const { return node_.child_by_field("type"); }
   SyntaxNode initial_value() const { return node_.child_by_field("value"); }
-  SyntaxNode location() const { return node_.child_by_field("location"); }  // AT %IX0.0
+  SyntaxNode location() const { return node_.child_by_field("location"); }         // AT %IX0.0
   SyntaxNode init_arguments() const { return node_.child_by_field("arguments"); }  // fb : FB(1, 2)
 
  private:
@@ -89,8 +89,8 @@ class TypeDeclaration {
   SyntaxNode node() const { return node_; }
   TypeKind kind() const { return kind_; }
   std::string_view name() const { return node_.child_by_field("name").text(); }
-  std::vector<VarDeclaration> fields() const;    // STRUCT / UNION members
-  std::vector<SyntaxNode> enum_values() const;   // enum_value nodes (name, value fields)
+  std::vector<VarDeclaration> fields() const;   // STRUCT / UNION members
+  std::vector<SyntaxNode> enum_values() const;  // enum_value nodes (name, value fields)
   SyntaxNode aliased_type() const { return node_.child_by_field("type"); }
   SyntaxNode base_type() const { return node_.child_by_field("base"); }  // enum base type
 
@@ -101,23 +101,48 @@ class TypeDeclaration {
 
 // What a file declares, in text order.
 struct Outline {
-  std::vector<Pou> pous;                 // top-level POUs with their members attached
-  std::vector<TypeDeclaration> types;    // every TYPE, also inside namespaces
-  std::vector<VarBlock> global_blocks;   // VAR_GLOBAL / VAR_CONFIG at top level (GVL files)
+  std::vector<Pou> pous;                // top-level POUs with their members attached
+  std::vector<TypeDeclaration> types;   // every TYPE, also inside namespaces
+  std::vector<VarBlock> global_blocks;  // VAR_GLOBAL / VAR_CONFIG at top level (GVL files)
   std::vector<SyntaxNode> configurations;
 };
 
 Outline outline(SyntaxNode root);
 
 enum class StatementKind {
-  Assignment, Call, If, Case, For, While, Repeat, Exit, Continue, Return, Jump, Label, Empty, Try, Unknown
+  Assignment,
+  Call,
+  If,
+  Case,
+  For,
+  While,
+  Repeat,
+  Exit,
+  Continue,
+  Return,
+  Jump,
+  Label,
+  Empty,
+  Try,
+  Unknown
 };
 StatementKind statement_kind(SyntaxNode statement);
 // The statements of a statement_list (comments and pragmas skipped).
 std::vector<SyntaxNode> statements(SyntaxNode statement_list);
 
 enum class ExpressionKind {
-  Binary, Unary, Parenthesized, Call, Member, Index, Dereference, Identifier, Literal, DirectAddress, Initializer, Unknown
+  Binary,
+  Unary,
+  Parenthesized,
+  Call,
+  Member,
+  Index,
+  Dereference,
+  Identifier,
+  Literal,
+  DirectAddress,
+  Initializer,
+  Unknown
 };
 ExpressionKind expression_kind(SyntaxNode expression);
 // For binary and unary expressions: the operator as written, upper-cased ("AND", "+", "MOD").

@@ -22,21 +22,21 @@ constexpr std::array kCodes = {
                        "A character that cannot start any token of IEC 61131-3."},
     DiagnosticCodeInfo{codes::kEncoding, Severity::Warning, "encoding",
                        "The file has bytes that are not valid in its text encoding; they were replaced."},
-    DiagnosticCodeInfo{codes::kBinaryFile, Severity::Error, "binary-file",
-                       "The file is binary, not PLC source text."},
+    DiagnosticCodeInfo{codes::kBinaryFile, Severity::Error, "binary-file", "The file is binary, not PLC source text."},
     DiagnosticCodeInfo{codes::kContainer, Severity::Error, "container",
                        "A vendor container file (TwinCAT XML, CODESYS .EXP) is malformed."},
     DiagnosticCodeInfo{codes::kParseAborted, Severity::Error, "parse-aborted",
                        "The file is too large or too deeply nested to parse within rung's limits."},
     DiagnosticCodeInfo{codes::kTooManyErrors, Severity::Info, "too-many-errors",
                        "More syntax errors follow; only the first ones of the file are shown."},
-    DiagnosticCodeInfo{codes::kIoError, Severity::Error, "io-error",
-                       "The file could not be read."},
+    DiagnosticCodeInfo{codes::kIoError, Severity::Error, "io-error", "The file could not be read."},
 };
 
 }  // namespace
 
-std::span<const DiagnosticCodeInfo> all_diagnostic_codes() { return kCodes; }
+std::span<const DiagnosticCodeInfo> all_diagnostic_codes() {
+  return kCodes;
+}
 
 const DiagnosticCodeInfo* find_diagnostic_code(std::string_view code) {
   for (const auto& info : kCodes) {
@@ -46,7 +46,10 @@ const DiagnosticCodeInfo* find_diagnostic_code(std::string_view code) {
         char a = info.code[i], b = code[i];
         if (a >= 'a' && a <= 'z') a = static_cast<char>(a - 32);
         if (b >= 'a' && b <= 'z') b = static_cast<char>(b - 32);
-        if (a != b) { same = false; break; }
+        if (a != b) {
+          same = false;
+          break;
+        }
       }
       if (same) return &info;
     }

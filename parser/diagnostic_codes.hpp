@@ -13,7 +13,7 @@ namespace rung {
 struct DiagnosticCodeInfo {
   std::string_view code;
   Severity default_severity;
-  std::string_view title;  // short kebab-case name, e.g. "missing-end-keyword"
+  std::string_view title;    // short kebab-case name, e.g. "missing-end-keyword"
   std::string_view summary;  // one sentence for `rung explain` listings
 };
 

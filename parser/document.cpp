@@ -51,10 +51,10 @@ Diagnostic make(std::string_view code, Severity severity, TextRange range, std::
 void Document::build(std::string_view bytes, const DocumentOptions& options) {
   if (bytes.size() > options.max_bytes) {
     file_lines_ = std::make_unique<source::LineIndex>(std::string_view());
-    diagnostics_.push_back(make(codes::kParseAborted, Severity::Error, {0, 0},
-                                fmt::format("file is {} MB; rung parses files up to {} MB", bytes.size() >> 20,
-                                            options.max_bytes >> 20),
-                                "split the file, or check that it really is PLC source"));
+    diagnostics_.push_back(
+        make(codes::kParseAborted, Severity::Error, {0, 0},
+             fmt::format("file is {} MB; rung parses files up to {} MB", bytes.size() >> 20, options.max_bytes >> 20),
+             "split the file, or check that it really is PLC source"));
     return;
   }
   *decoded_ = source::decode(bytes);

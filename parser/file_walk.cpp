@@ -23,10 +23,12 @@ bool skipped_directory(const std::filesystem::path& dir) {
 
 SourceKind source_kind_of(const std::filesystem::path& path) {
   std::string ext = lower(path.extension().string());
-  if (ext == ".st" || ext == ".iecst" || ext == ".gvl" || ext == ".pou" || ext == ".dut") return SourceKind::StructuredText;
+  if (ext == ".st" || ext == ".iecst" || ext == ".gvl" || ext == ".pou" || ext == ".dut")
+    return SourceKind::StructuredText;
   if (ext == ".il") return SourceKind::InstructionList;
   if (ext == ".sfc") return SourceKind::Sfc;
-  if (ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tcitf") return SourceKind::TwinCat;
+  if (ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tcitf")
+    return SourceKind::TwinCat;
   if (ext == ".exp") return SourceKind::CodesysExport;
   return SourceKind::None;
 }

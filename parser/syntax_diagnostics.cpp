@@ -17,7 +17,9 @@ std::string upper(std::string_view s) {
   return out;
 }
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
 
 // Short, printable excerpt of a token for a message.
 std::string excerpt(std::string_view text) {
@@ -167,8 +169,7 @@ class Collector {
             {DiagnosticLabel{open.range(), fmt::format("this {} is never closed", upper(open.text()))}});
         return;
       }
-      add(codes::kUnclosedBlock, {at, at}, fmt::format("missing {}", upper(kind)),
-          fmt::format("add {}", upper(kind)));
+      add(codes::kUnclosedBlock, {at, at}, fmt::format("missing {}", upper(kind)), fmt::format("add {}", upper(kind)));
       return;
     }
     // Point at the end of the token the missing one should follow, not at the next line.
@@ -231,7 +232,8 @@ class Collector {
   }
 
   void report_unclosed_comment(uint32_t begin, std::string_view close) {
-    add(codes::kUnterminatedComment, {begin, begin + 2}, fmt::format("comment opened at {} is never closed", where(begin)),
+    add(codes::kUnterminatedComment, {begin, begin + 2},
+        fmt::format("comment opened at {} is never closed", where(begin)),
         fmt::format("close the comment with '{}'", close));
   }
 
@@ -249,7 +251,8 @@ class Collector {
     uint32_t begin = node.begin() + static_cast<uint32_t>(skip);
     std::string_view body = text.substr(skip);
     SyntaxNode leaf = first_leaf(node);
-    std::string_view first = leaf && leaf.end() > leaf.begin() ? leaf.text() : body.substr(0, std::min<size_t>(body.size(), 1));
+    std::string_view first =
+        leaf && leaf.end() > leaf.begin() ? leaf.text() : body.substr(0, std::min<size_t>(body.size(), 1));
     if (leaf && leaf.begin() > begin) first = body.substr(0, std::min<size_t>(body.size(), 1));
 
     if (body.rfind("(*", 0) == 0 || body.rfind("/*", 0) == 0) {
@@ -273,7 +276,8 @@ class Collector {
     if (up.rfind("ELSE", 0) == 0) {
       size_t i = 4;
       while (i < up.size() && is_space(up[i])) ++i;
-      if (i > 4 && up.compare(i, 2, "IF") == 0 && (i + 2 >= up.size() || !std::isalnum(static_cast<unsigned char>(up[i + 2])))) {
+      if (i > 4 && up.compare(i, 2, "IF") == 0 &&
+          (i + 2 >= up.size() || !std::isalnum(static_cast<unsigned char>(up[i + 2])))) {
         add(codes::kElseIf, {begin, begin + static_cast<uint32_t>(i + 2)}, "unexpected 'ELSE IF' — did you mean ELSIF?",
             "write ELSIF; 'ELSE IF' opens a nested IF that needs its own END_IF");
         return;
@@ -281,7 +285,9 @@ class Collector {
     }
     if (!first.empty()) {
       unsigned char c0 = static_cast<unsigned char>(first[0]);
-      bool token_char = std::isalnum(c0) || c0 == '_' || std::string_view("()[];:,.=<>+-*/^#%&'\"{}").find(static_cast<char>(c0)) != std::string_view::npos;
+      bool token_char =
+          std::isalnum(c0) || c0 == '_' ||
+          std::string_view("()[];:,.=<>+-*/^#%&'\"{}").find(static_cast<char>(c0)) != std::string_view::npos;
       if (!token_char) {
         size_t len = 1;
         if (c0 >= 0xC0) len = c0 >= 0xF0 ? 4 : c0 >= 0xE0 ? 3 : 2;
@@ -304,7 +310,6 @@ class Collector {
     add(codes::kSyntaxError, {begin, std::max(begin + 1, begin + static_cast<uint32_t>(first.size()))},
         fmt::format("unexpected '{}'{}", excerpt(first), context));
   }
-
 
   // Non-empty leaves below `node` in text order (comments and pragmas skipped), at most `limit`.
   static std::vector<SyntaxNode> leaves_of(SyntaxNode node, size_t limit = 20000) {
@@ -332,7 +337,8 @@ class Collector {
   }
 
   static bool is_operator_word(std::string_view kw) {
-    return kw == "AND" || kw == "OR" || kw == "XOR" || kw == "NOT" || kw == "MOD" || kw == "AND_THEN" || kw == "OR_ELSE";
+    return kw == "AND" || kw == "OR" || kw == "XOR" || kw == "NOT" || kw == "MOD" || kw == "AND_THEN" ||
+           kw == "OR_ELSE";
   }
 
   static bool ends_expression(SyntaxNode leaf) {
@@ -350,11 +356,11 @@ class Collector {
 
   static const BlockRule* block_rule(std::string_view keyword) {
     static constexpr BlockRule kRules[] = {
-        {"IF", "END_IF", "THEN"},       {"CASE", "END_CASE", "OF"},   {"FOR", "END_FOR", "DO"},
-        {"WHILE", "END_WHILE", "DO"},   {"REPEAT", "END_REPEAT", ""}, {"STRUCT", "END_STRUCT", ""},
-        {"VAR", "END_VAR", ""},         {"VAR_INPUT", "END_VAR", ""}, {"VAR_OUTPUT", "END_VAR", ""},
-        {"VAR_IN_OUT", "END_VAR", ""},  {"VAR_GLOBAL", "END_VAR", ""}, {"VAR_TEMP", "END_VAR", ""},
-        {"VAR_STAT", "END_VAR", ""},    {"VAR_EXTERNAL", "END_VAR", ""}, {"VAR_INST", "END_VAR", ""},
+        {"IF", "END_IF", "THEN"},      {"CASE", "END_CASE", "OF"},      {"FOR", "END_FOR", "DO"},
+        {"WHILE", "END_WHILE", "DO"},  {"REPEAT", "END_REPEAT", ""},    {"STRUCT", "END_STRUCT", ""},
+        {"VAR", "END_VAR", ""},        {"VAR_INPUT", "END_VAR", ""},    {"VAR_OUTPUT", "END_VAR", ""},
+        {"VAR_IN_OUT", "END_VAR", ""}, {"VAR_GLOBAL", "END_VAR", ""},   {"VAR_TEMP", "END_VAR", ""},
+        {"VAR_STAT", "END_VAR", ""},   {"VAR_EXTERNAL", "END_VAR", ""}, {"VAR_INST", "END_VAR", ""},
     };
     for (const auto& r : kRules)
       if (r.opener == keyword) return &r;
@@ -372,9 +378,9 @@ class Collector {
       bool after_else;
     };
     std::vector<Open> open;
-    SyntaxNode else_if;  // the ELSE of the first ELSE IF pair seen
+    SyntaxNode else_if;     // the ELSE of the first ELSE IF pair seen
     SyntaxNode else_if_if;  // ... and its IF
-    SyntaxNode pou_end;  // an END_PROGRAM/END_FUNCTION_BLOCK/... reached while blocks were open
+    SyntaxNode pou_end;     // an END_PROGRAM/END_FUNCTION_BLOCK/... reached while blocks were open
     for (size_t i = 0; i < leaves.size(); ++i) {
       SyntaxNode leaf = leaves[i];
       std::string kw = keyword_of(leaf);
@@ -393,7 +399,8 @@ class Collector {
           add(codes::kMissingToken, {last.end(), last.end()},
               fmt::format("missing {} after the {} condition", top.rule->separator, top.rule->opener),
               fmt::format("write {} at the end of the line", top.rule->separator),
-              {DiagnosticLabel{top.keyword.range(), fmt::format("this {} needs {}", top.rule->opener, top.rule->separator)}});
+              {DiagnosticLabel{top.keyword.range(),
+                               fmt::format("this {} needs {}", top.rule->opener, top.rule->separator)}});
           return true;
         }
       }

@@ -220,17 +220,20 @@ void SyntaxTree::for_each_token(const std::function<void(const Token&)>& visit) 
       if (descending) {
         bool leaf = ts_node_child_count(node) == 0;
         std::string_view kind = ts_node_type(node);
-        bool trivia_leaf = ts_node_is_extra(node) && (kind == "comment" || kind == "pragma" ||
-                                                       kind == "line_comment" || kind == "block_comment");
+        bool trivia_leaf = ts_node_is_extra(node) &&
+                           (kind == "comment" || kind == "pragma" || kind == "line_comment" || kind == "block_comment");
         if (leaf || trivia_leaf) {
           uint32_t b = std::min(ts_node_start_byte(node), size);
           uint32_t e = std::min(ts_node_end_byte(node), size);
           if (e > b && b >= cursor_offset) {
             emit_gap(b);
             Token::Kind k = Token::Kind::Token;
-            if (ts_node_is_extra(node) && kind.find("comment") != std::string_view::npos) k = Token::Kind::Comment;
-            else if (ts_node_is_extra(node) && kind.find("pragma") != std::string_view::npos) k = Token::Kind::Pragma;
-            else if (ts_node_symbol(node) == static_cast<TSSymbol>(-1)) k = Token::Kind::Error;
+            if (ts_node_is_extra(node) && kind.find("comment") != std::string_view::npos)
+              k = Token::Kind::Comment;
+            else if (ts_node_is_extra(node) && kind.find("pragma") != std::string_view::npos)
+              k = Token::Kind::Pragma;
+            else if (ts_node_symbol(node) == static_cast<TSSymbol>(-1))
+              k = Token::Kind::Error;
             visit(Token{k, {b, e}, kind});
             cursor_offset = e;
           }

@@ -304,20 +304,29 @@ class ExpReader {
       const char next = k + 1 < end ? virtual_[k + 1] : '\0';
       switch (state) {
         case State::Code:
-          if (c == '\'') state = State::Quote;
-          else if (c == '"') state = State::DoubleQuote;
-          else if (c == '(' && next == '*') state = State::Block, ++k;
-          else if (c == '/' && next == '*') state = State::Slash, ++k;
-          else if (c == '/' && next == '/') state = State::Line, ++k;
+          if (c == '\'')
+            state = State::Quote;
+          else if (c == '"')
+            state = State::DoubleQuote;
+          else if (c == '(' && next == '*')
+            state = State::Block, ++k;
+          else if (c == '/' && next == '*')
+            state = State::Slash, ++k;
+          else if (c == '/' && next == '/')
+            state = State::Line, ++k;
           break;
         case State::Quote:
         case State::DoubleQuote:
-          if (c == '$') ++k;
-          else if ((c == '\'' && state == State::Quote) || (c == '"' && state == State::DoubleQuote)) state = State::Code;
+          if (c == '$')
+            ++k;
+          else if ((c == '\'' && state == State::Quote) || (c == '"' && state == State::DoubleQuote))
+            state = State::Code;
           break;
         case State::Block:
-          if (c == '*' && next == ')') state = State::Code, ++k;
-          else if (c == '(' && next == '*') virtual_[k] = ' ';
+          if (c == '*' && next == ')')
+            state = State::Code, ++k;
+          else if (c == '(' && next == '*')
+            virtual_[k] = ' ';
           break;
         case State::Slash:
           if (c == '*' && next == '/') state = State::Code, ++k;

@@ -1,10 +1,10 @@
 // Drives the real `rung` binary the way a user or a CI script does: exit codes, output formats.
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/support/test_paths.hpp"

@@ -3,8 +3,8 @@
 // S-expression. This is what keeps the committed grammar/src honest in CI.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <cctype>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -59,8 +59,10 @@ std::vector<CorpusCase> read_corpus(const std::filesystem::path& path) {
     if (j >= lines.size()) break;
     c.name = header.empty() ? "" : header[0];
     for (const auto& h : header)
-      if (h == ":skip") c.skip = true;
-      else if (h == ":error") c.expect_error = true;
+      if (h == ":skip")
+        c.skip = true;
+      else if (h == ":error")
+        c.expect_error = true;
     ++j;
     // Input runs to the last '---' line before the next header.
     size_t next = j;
@@ -100,8 +102,10 @@ std::string normalize(const std::string& sexp, bool keep_fields) {
       continue;
     }
     if (in_comment) {
-      if (c == '\n') in_comment = false;
-      else continue;
+      if (c == '\n')
+        in_comment = false;
+      else
+        continue;
     }
     if (c == ';') {
       in_comment = true;

@@ -32,7 +32,8 @@ TEST(GrammarQueries, AllQueriesCompile) {
     std::string source = test::read_file(e.path());
     uint32_t offset = 0;
     TSQueryError error = TSQueryErrorNone;
-    TSQuery* q = ts_query_new(tree_sitter_iec61131(), source.data(), static_cast<uint32_t>(source.size()), &offset, &error);
+    TSQuery* q =
+        ts_query_new(tree_sitter_iec61131(), source.data(), static_cast<uint32_t>(source.size()), &offset, &error);
     EXPECT_NE(q, nullptr) << e.path().filename() << ": " << error_name(error) << " error at byte " << offset << ": "
                           << source.substr(offset, 40);
     if (q) {

@@ -80,7 +80,7 @@ TEST(Document, TwinCatDiagnosticsPointAtTheContainerLines) {
   ASSERT_NE(doc.tree(), nullptr);
   ASSERT_FALSE(doc.diagnostics().empty());
   FilePosition p = doc.position_of_file_offset(doc.diagnostics()[0].range.begin);
-  EXPECT_EQ(p.line, 11u);  // "x := ;]]></ST>" is line 11 of the .TcPOU file
+  EXPECT_EQ(p.line, 11u);   // "x := ;]]></ST>" is line 11 of the .TcPOU file
   EXPECT_EQ(p.column, 5u);  // right after ':=', where the expression is missing
 }
 

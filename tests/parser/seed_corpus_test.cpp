@@ -26,15 +26,45 @@ std::string lower(std::string s) {
 std::string defect_phrase(const std::string& header);
 
 // Words with which the corpus headers say an example is not valid code as written.
-bool header_admits_defect(const std::string& header) { return !defect_phrase(header).empty(); }
+bool header_admits_defect(const std::string& header) {
+  return !defect_phrase(header).empty();
+}
 
 std::string defect_phrase(const std::string& header) {
-  static const char* kWords[] = {"wrong",     "incorrect", "error",   "incomplete", "fragment", "typo",
-                                 "missing",   "elided",    "elision", "lost",       "artifact", "garbled",
-                                 "invalid",   "illegal",   "reject",  "not valid",  "omit",     "truncated",
-                                 "pseudo",    "not compil", "broken", "mistake",    "mangled",  "unbalanced",
-                                 "as printed", "printed without", "(kept)", "placeholder", "not implemented",
-                                 "ellipsis",  "does not compile", "not supported", "instead of", "lacks",
+  static const char* kWords[] = {"wrong",
+                                 "incorrect",
+                                 "error",
+                                 "incomplete",
+                                 "fragment",
+                                 "typo",
+                                 "missing",
+                                 "elided",
+                                 "elision",
+                                 "lost",
+                                 "artifact",
+                                 "garbled",
+                                 "invalid",
+                                 "illegal",
+                                 "reject",
+                                 "not valid",
+                                 "omit",
+                                 "truncated",
+                                 "pseudo",
+                                 "not compil",
+                                 "broken",
+                                 "mistake",
+                                 "mangled",
+                                 "unbalanced",
+                                 "as printed",
+                                 "printed without",
+                                 "(kept)",
+                                 "placeholder",
+                                 "not implemented",
+                                 "ellipsis",
+                                 "does not compile",
+                                 "not supported",
+                                 "instead of",
+                                 "lacks",
                                  "should be"};
   std::string h = lower(header);
   for (const char* w : kWords) {
@@ -129,7 +159,8 @@ TEST(SeedCorpus, OnlyExamplesMarkedWrongOrIncompleteFailToParse) {
       std::string text = test::read_file(root / file);
       std::string phrase = defect_phrase(leading_comments(text));
       if (phrase.empty() && body_has_elision(text)) phrase = "code contains an elision line (...)";
-      out += file + "  " + (phrase.empty() ? "TODO header does not admit a defect" : phrase) + "  [rung: " + first_error + "]\n";
+      out += file + "  " + (phrase.empty() ? "TODO header does not admit a defect" : phrase) +
+             "  [rung: " + first_error + "]\n";
     }
     test::write_file(list_path, out);
     return;

@@ -8,9 +8,15 @@
 
 namespace rung::test {
 
-inline std::filesystem::path source_dir() { return RUNG_SOURCE_DIR; }
-inline std::filesystem::path shared_dir() { return RUNG_SHARED_DIR; }
-inline std::filesystem::path rung_binary() { return RUNG_BINARY; }
+inline std::filesystem::path source_dir() {
+  return RUNG_SOURCE_DIR;
+}
+inline std::filesystem::path shared_dir() {
+  return RUNG_SHARED_DIR;
+}
+inline std::filesystem::path rung_binary() {
+  return RUNG_BINARY;
+}
 
 inline std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
