@@ -30,6 +30,10 @@ constexpr std::array kCodes = {
     DiagnosticCodeInfo{codes::kTooManyErrors, Severity::Info, "too-many-errors",
                        "More syntax errors follow; only the first ones of the file are shown."},
     DiagnosticCodeInfo{codes::kIoError, Severity::Error, "io-error", "The file could not be read."},
+    DiagnosticCodeInfo{codes::kMisspelledKeyword, Severity::Error, "misspelled-keyword",
+                       "A word that is almost a keyword (ELSEIF, ENDIF, END_IFF) where the keyword belongs."},
+    DiagnosticCodeInfo{codes::kWrongOperator, Severity::Error, "wrong-operator",
+                       "An operator from another language (==, !=, &&, ||, !) or '=' where ':=' assigns."},
 };
 
 }  // namespace

@@ -34,6 +34,8 @@ inline constexpr std::string_view kContainer = "S010";
 inline constexpr std::string_view kParseAborted = "S011";
 inline constexpr std::string_view kTooManyErrors = "S012";
 inline constexpr std::string_view kIoError = "S013";
+inline constexpr std::string_view kMisspelledKeyword = "S014";
+inline constexpr std::string_view kWrongOperator = "S015";
 }  // namespace codes
 
 }  // namespace rung

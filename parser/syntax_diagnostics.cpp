@@ -298,6 +298,7 @@ class Collector {
         return;
       }
     }
+    if (report_common_mistake(node)) return;
     if (report_block_structure(node)) return;
     if (report_missing_semicolon(node)) return;
     // A statement that runs on into the next line usually lacks its ';'.
@@ -309,6 +310,97 @@ class Collector {
     std::string context = describe_context(node);
     add(codes::kSyntaxError, {begin, std::max(begin + 1, begin + static_cast<uint32_t>(first.size()))},
         fmt::format("unexpected '{}'{}", excerpt(first), context));
+  }
+
+
+  // Mistakes people bring from other languages or make by typing: misspelled keywords
+  // (ELSEIF, ENDIF, END_IFF), C operators (==, !=, &&, ||), '=' where ':=' assigns.
+  bool report_common_mistake(SyntaxNode error) {
+    std::vector<SyntaxNode> leaves = leaves_of(error, 4096);
+    // The token before the error region belongs to the statement it breaks.
+    if (SyntaxNode before = last_leaf_before(tree_.root(), error.begin())) leaves.insert(leaves.begin(), before);
+    for (size_t i = 0; i < leaves.size(); ++i) {
+      SyntaxNode leaf = leaves[i];
+      std::string_view t = leaf.text();
+      // The lexer splits '==' into two '=' tokens.
+      if (t == "=" && i > 0 && leaves[i - 1].text() == "=" && leaves[i - 1].end() == leaf.begin()) {
+        add(codes::kWrongOperator, {leaves[i - 1].begin(), leaf.end()}, "'==' is not an IEC 61131-3 operator",
+            "compare with '='");
+        return true;
+      }
+      if (t == "==" || t == "!=" || t == "&&" || t == "||" || t == "!") {
+        static constexpr std::pair<std::string_view, std::string_view> kOps[] = {
+            {"==", "compare with '='"}, {"!=", "compare with '<>'"}, {"&&", "write AND (or AND_THEN)"},
+            {"||", "write OR (or OR_ELSE)"}, {"!", "write NOT"}};
+        for (const auto& [op, fix] : kOps) {
+          if (t == op) {
+            add(codes::kWrongOperator, leaf.range(), fmt::format("'{}' is not an IEC 61131-3 operator", t),
+                std::string(fix));
+            return true;
+          }
+        }
+      }
+      if (leaf.kind() == "identifier" || (!leaf.is_named() && !keyword_of(leaf).empty())) {
+        std::string word = upper(t);
+        std::string_view meant = misspelled_keyword(word);
+        if (!meant.empty()) {
+          add(codes::kMisspelledKeyword, leaf.range(), fmt::format("'{}' is not a keyword — did you mean {}?", t, meant),
+              fmt::format("write {}", meant));
+          return true;
+        }
+      }
+      // `a = 1;` at the start of a line: '=' compares in ST, ':=' assigns.
+      if (t == "=" && i > 0) {
+        SyntaxNode target = leaves[i - 1];
+        bool at_line_start = i < 2 || line_of(leaves[i - 2].end()) < line_of(target.begin()) || leaves[i - 2].text() == ";";
+        bool in_for = i >= 2 && upper(leaves[i - 2].text()) == "FOR";
+        bool name_like = target.is_named() && !target.text().empty() &&
+                         (std::isalpha(static_cast<unsigned char>(target.text()[0])) || target.text()[0] == '_');
+        if (name_like && (at_line_start || in_for)) {
+          add(codes::kWrongOperator, leaf.range(),
+              in_for ? std::string("FOR needs ':=' to set its counter") : std::string("'=' compares; it does not assign"),
+              in_for ? std::string("write FOR i := 1 TO 10 DO") : std::string("assign with ':='"));
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  // The keyword a misspelled word most likely stands for, or "" when it is no near miss.
+  static std::string_view misspelled_keyword(const std::string& word) {
+    static constexpr std::string_view kKeywords[] = {
+        "END_IF",       "END_CASE",     "END_FOR",       "END_WHILE",        "END_REPEAT",   "END_VAR",
+        "END_TYPE",     "END_STRUCT",   "END_PROGRAM",   "END_FUNCTION",     "END_FUNCTION_BLOCK",
+        "END_METHOD",   "END_PROPERTY", "END_ACTION",    "END_INTERFACE",    "END_UNION",    "ELSIF"};
+    if (word == "ELSEIF" || word == "ELSE_IF" || word == "ELIF" || word == "ELSIFF") return "ELSIF";
+    if (word.rfind("END", 0) != 0 || word.size() < 5) return {};
+    std::string_view best;
+    size_t best_distance = 3;
+    for (std::string_view k : kKeywords) {
+      if (k == word) return {};
+      size_t d = edit_distance(word, k);
+      if (d < best_distance) {
+        best_distance = d;
+        best = k;
+      }
+    }
+    return best;
+  }
+
+  static size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j) {
+        size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diagonal = up;
+      }
+    }
+    return row[b.size()];
   }
 
   // Non-empty leaves below `node` in text order (comments and pragmas skipped), at most `limit`.
