@@ -114,6 +114,11 @@ uint32_t Document::file_offset_of(uint32_t tree_offset) const {
   return mapped ? *mapped : static_cast<uint32_t>(decoded_->utf8.size());
 }
 
+std::optional<uint32_t> Document::tree_offset_of(uint32_t file_offset) const {
+  if (!container_) return file_offset;
+  return container_->to_virtual_offset(file_offset);
+}
+
 FilePosition Document::position_of_file_offset(uint32_t file_offset) const {
   auto p = file_lines_->position_of(file_offset);
   FilePosition out;

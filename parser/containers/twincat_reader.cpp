@@ -115,9 +115,20 @@ class TwinCatReader {
         ContainerObject object = member(sub, kind);
         const std::string name = attribute(sub, "Name");
         // `ACTION name:` / `TRANSITION name:` headers: the grammar's object forms; a
-        // transition body is usually one boolean expression.
-        add_header(fmt::format("{} {}:\n", kind, name), role + name);
-        add_implementation(sub, role + name, object);
+        // transition body is usually one boolean expression. An action or transition
+        // without text to read (graphical, or empty as SFC step actions often are) gets
+        // no header: an empty `ACTION name:` directly before a `TRANSITION` header does
+        // not parse, and there is nothing in it for the grammar anyway.
+        if (has_code(text_body(sub))) {
+          add_header(fmt::format("{} {}:\n", kind, name), role + name);
+          add_implementation(sub, role + name, object);
+        } else if (const pugi::xml_node body = body_of(sub); body && !is_text_language(body.name())) {
+          object.language = body.name();
+          object.note = fmt::format("{} implementation is graphical; not read as text", body.name());
+        } else {
+          if (body) object.language = body.name();
+          object.note = "empty; not in the virtual text";
+        }
         objects_.push_back(std::move(object));
       }
     }
@@ -131,21 +142,41 @@ class TwinCatReader {
     return object;
   }
 
+  // The body element of `owner`'s implementation (<ST>, <IL>, <SFC>, <NWL>...), or null.
+  static pugi::xml_node body_of(pugi::xml_node owner) {
+    for (const pugi::xml_node body : owner.child("Implementation").children()) {
+      if (body.type() == pugi::node_element) return body;
+    }
+    return {};
+  }
+
+  // The textual body of `owner` (<ST> or <IL>), or null when it has none or a graphical one.
+  static pugi::xml_node text_body(pugi::xml_node owner) {
+    const pugi::xml_node body = body_of(owner);
+    return body && is_text_language(body.name()) ? body : pugi::xml_node();
+  }
+
+  // Whether `element` holds character data other than blanks (escaped or CDATA).
+  static bool has_code(pugi::xml_node element) {
+    for (const pugi::xml_node node : element.children()) {
+      if (node.type() != pugi::node_cdata && node.type() != pugi::node_pcdata) continue;
+      const std::string_view value = node.value();
+      if (value.find_first_not_of(" \t\r\n") != std::string_view::npos) return true;
+    }
+    return false;
+  }
+
   // The implementation of `owner`: its <ST> (or textual <IL>) becomes virtual
   // text; a graphical body (LD/FBD as <NWL>, <SFC>, <CFC>...) is recorded on the object.
   void add_implementation(pugi::xml_node owner, const std::string& role, ContainerObject& object) {
-    const pugi::xml_node implementation = owner.child("Implementation");
-    if (!implementation) return;
-    for (const pugi::xml_node body : implementation.children()) {
-      if (body.type() != pugi::node_element) continue;
-      const std::string_view language = body.name();
-      if (object.language.empty()) object.language = std::string(language);
-      if (is_text_language(language)) {
-        add_text(body, role);
-      } else if (object.note.empty()) {
-        object.note = fmt::format("{} implementation is graphical; not read as text", language);
-      }
-      return;
+    const pugi::xml_node body = body_of(owner);
+    if (!body) return;
+    const std::string_view language = body.name();
+    if (object.language.empty()) object.language = std::string(language);
+    if (is_text_language(language)) {
+      add_text(body, role);
+    } else if (object.note.empty()) {
+      object.note = fmt::format("{} implementation is graphical; not read as text", language);
     }
   }
 

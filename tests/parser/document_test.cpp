@@ -82,6 +82,12 @@ TEST(Document, TwinCatDiagnosticsPointAtTheContainerLines) {
   FilePosition p = doc.position_of_file_offset(doc.diagnostics()[0].range.begin);
   EXPECT_EQ(p.line, 11u);   // "x := ;]]></ST>" is line 11 of the .TcPOU file
   EXPECT_EQ(p.column, 5u);  // right after ':=', where the expression is missing
+  // And back: the file offset of "x := ;" maps to the same text in the parsed tree.
+  uint32_t file_offset = static_cast<uint32_t>(xml.find("x := ;"));
+  auto tree_offset = doc.tree_offset_of(file_offset);
+  ASSERT_TRUE(tree_offset.has_value());
+  EXPECT_EQ(doc.tree()->text().substr(*tree_offset, 6), "x := ;");
+  EXPECT_FALSE(doc.tree_offset_of(static_cast<uint32_t>(xml.find("<Implementation>"))).has_value());
 }
 
 TEST(Document, ExampleProjectParsesClean) {
