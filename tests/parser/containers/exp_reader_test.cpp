@@ -208,5 +208,26 @@ TEST(ExpReader, EmptyAndOddInputs) {
   EXPECT_EQ(lone.objects[0].note, "ends without END_PROGRAM");
 }
 
+// A library export's layout: blank lines first, a plain comment between the markers and
+// the header, tab-separated "ACTION\tName:" blocks after END_FUNCTION_BLOCK, runs of blank
+// lines between objects, an indented header, CRLF.
+TEST(ExpReader, ActionsAfterTheBlockAndCommentsBeforeTheHeader) {
+  const std::string file = decoded_data("FB_Client.EXP");
+  const ContainerDocument doc = read_exp(file);
+  EXPECT_EQ(doc.virtual_text, file);
+  ASSERT_EQ(doc.objects.size(), 4u);
+  EXPECT_EQ(doc.objects[0].kind, "FUNCTION_BLOCK");
+  EXPECT_EQ(doc.objects[0].name, "FB_Client");
+  EXPECT_EQ(doc.objects[0].path, "/Net/Client");
+  EXPECT_EQ(doc.objects[0].language, "ST");
+  EXPECT_EQ(doc.objects[1].kind, "ACTION");
+  EXPECT_EQ(doc.objects[1].name, "FB_Client.AC_Close");
+  EXPECT_EQ(doc.objects[1].path, "/Net/Client");
+  EXPECT_EQ(doc.objects[2].name, "FB_Client.AC_Open");
+  EXPECT_EQ(doc.objects[3].name, "FB_Random");
+  for (const ContainerObject& object : doc.objects) EXPECT_EQ(object.note, "") << object.name;
+  EXPECT_EQ(file_position_of(doc, file, "wState := 2#0111"), (LineColumn{34, 1}));
+}
+
 }  // namespace
 }  // namespace rung::containers

@@ -285,5 +285,49 @@ TEST(TwinCatReader, EmptyCdataAddsNothing) {
   EXPECT_EQ(doc.objects[0].language, "ST");
 }
 
+// An SFC program as XAE writes it (BOM, CRLF, <LineIds>): the chart is skipped; step
+// actions and transitions with code become objects of the virtual text; an empty or
+// graphical action gets no header, since there is nothing in it to parse.
+TEST(TwinCatReader, SfcProgramKeepsActionsAndTransitionsWithCode) {
+  const std::string file = decoded_data("P_Sequence.TcPOU");
+  const ContainerDocument doc = read_twincat(file);
+  EXPECT_TRUE(doc.issues.empty());
+  EXPECT_EQ(doc.virtual_text,
+            "PROGRAM P_Sequence\r\nVAR\r\n\tbGo : BOOL;\r\n\tnCycles : UDINT;\r\nEND_VAR\r\n"
+            "\nACTION Run_active:\nnCycles := nCycles + 1;"
+            "\nTRANSITION Trans0:\nbGo"
+            "\nTRANSITION Trans1:\nnCycles >= 3");
+  ASSERT_EQ(doc.objects.size(), 6u);
+  EXPECT_EQ(doc.objects[0].language, "SFC");
+  EXPECT_EQ(doc.objects[1].name, "P_Sequence.Idle_entry");
+  EXPECT_EQ(doc.objects[1].language, "ST");
+  EXPECT_EQ(doc.objects[1].note, "empty; not in the virtual text");
+  EXPECT_EQ(doc.objects[2].note, "");
+  EXPECT_EQ(doc.objects[3].name, "P_Sequence.Lamp");
+  EXPECT_EQ(doc.objects[3].language, "NWL");
+  EXPECT_EQ(doc.objects[3].note, "NWL implementation is graphical; not read as text");
+  EXPECT_EQ(doc.objects[5].kind, "TRANSITION");
+  EXPECT_EQ(file_position_of(doc, file, "nCycles := nCycles"), (LineColumn{28, 22}));
+  EXPECT_EQ(file_position_of(doc, file, "nCycles >= 3"), (LineColumn{45, 22}));
+}
+
+// Interface properties as XAE 4026 writes them: accessors with an empty CDATA
+// declaration, or no child at all; methods with a declaration only.
+TEST(TwinCatReader, InterfacePropertiesWithEmptyAccessors) {
+  const std::string file = decoded_data("I_Parent.TcIO");
+  const ContainerDocument doc = read_twincat(file);
+  EXPECT_TRUE(doc.issues.empty());
+  EXPECT_EQ(doc.virtual_text,
+            "(* Parent of children.\n   (* nested *)\n*)\nINTERFACE I_Parent EXTENDS I_Base, Lib.I_Dispatcher\n"
+            "METHOD ChildAt : I_Child\nVAR_INPUT\n\tnIndex : UDINT;\nEND_VAR\n"
+            "{attribute 'monitoring' := 'call'}\nPROPERTY FINAL Policy : Lib.I_Policy\nGET\nSET\n"
+            "PROPERTY Count : UDINT\nGET\n");
+  ASSERT_EQ(doc.objects.size(), 4u);
+  EXPECT_EQ(doc.objects[0].kind, "ITF");
+  EXPECT_EQ(doc.objects[1].kind, "METHOD");
+  EXPECT_EQ(doc.objects[2].name, "I_Parent.Policy");
+  EXPECT_EQ(file_position_of(doc, file, "PROPERTY Count"), (LineColumn{19, 29}));
+}
+
 }  // namespace
 }  // namespace rung::containers
