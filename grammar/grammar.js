@@ -127,7 +127,7 @@ function varDeclarationCore($) {
     optional(commaSep1(field('name', choice($.identifier, alias($._dotted_name, $.qualified_name))))),
     optional(field('location', $.location)),
     ':',
-    field('type', choice($._type_spec, alias($._inline_struct, $.struct_type))),
+    field('type', choice($._type_spec, alias($._inline_struct, $.struct_type), $.variadic_type)),
     optional(field('edge', choice(kw('R_EDGE'), kw('F_EDGE')))),
     optional(field('arguments', choice($.argument_list, $.argument_lists))),
     optional(seq(
@@ -194,6 +194,7 @@ module.exports = grammar({
     [$.call_statement, $._reference],
     [$._postfix_target, $._primary_expression],
     [$._top_level_item, $._closed_item_and_fragments],
+    [$._reference, $.qualified_name],
   ],
 
   rules: {
@@ -299,7 +300,9 @@ module.exports = grammar({
 
     _dotted_name: $ => seq($.identifier, repeat1(seq('.', $.identifier))),
 
-    type_name: $ => seq($.identifier, repeat(seq('.', $.identifier))),
+    type_name: $ => seq($.identifier, optional($._type_name_tail)),
+
+    _type_name_tail: $ => seq('.', $.identifier, optional($._type_name_tail)),
 
     // -----------------------------------------------------------------------
     // POUs
@@ -570,12 +573,23 @@ module.exports = grammar({
     // -----------------------------------------------------------------------
     // Variable declarations
     // -----------------------------------------------------------------------
-    var_block: $ => prec.right(seq(
-      field('kind', choice(...VAR_KEYWORDS.map(kw))),
-      repeat($.var_qualifier),
-      ...declarationList($),
-      kw('END_VAR'),
-      optional(';'),
+    var_block: $ => prec.right(choice(
+      seq(
+        field('kind', choice(...VAR_KEYWORDS.filter(k => k !== 'VAR_ACCESS').map(kw))),
+        repeat($.var_qualifier),
+        ...declarationList($),
+        kw('END_VAR'),
+        optional(';'),
+      ),
+      // access paths of a configuration or resource
+      seq(
+        field('kind', kw('VAR_ACCESS')),
+        repeat($.var_qualifier),
+        repeat(choice($.access_declaration, $.var_declaration, $.empty_declaration)),
+        optional(alias($._last_var_declaration, $.var_declaration)),
+        kw('END_VAR'),
+        optional(';'),
+      ),
     )),
 
     empty_declaration: _ => ';',
@@ -587,6 +601,27 @@ module.exports = grammar({
     var_declaration: $ => seq(...varDeclarationCore($), ';'),
 
     _last_var_declaration: $ => prec.right(seq(...varDeclarationCore($))),
+
+    // VAR_ACCESS: ABLE : Station_1.%IX1.1 : BOOL READ_ONLY;
+    access_declaration: $ => seq(
+      field('name', $.identifier),
+      ':',
+      field('path', $.access_path),
+      ':',
+      field('type', $._type_spec),
+      optional(field('direction', choice(kw('READ_ONLY'), kw('READ_WRITE')))),
+      ';',
+    ),
+
+    access_path: $ => choice($.direct_variable, $._access_path_segments),
+
+    _access_path_segments: $ => seq(
+      $.identifier,
+      optional(seq('.', choice($.direct_variable, $._access_path_segments))),
+    ),
+
+    // RuSTy variadic inputs: IN : {sized} T...;  args : ...;
+    variadic_type: $ => seq(optional(field('type', $._type_spec)), '...'),
 
     // FB_init arguments of each element of an array of function blocks:
     // aFb : ARRAY[0..1] OF FB_X[(a := 1), (a := 2)];
@@ -1057,8 +1092,22 @@ module.exports = grammar({
       optional(seq(kw('WITH'), field('task', $.identifier))),
       ':',
       field('type', $.type_name),
-      optional(field('arguments', $.argument_list)),
+      optional(field('arguments', alias($._program_configuration_arguments, $.argument_list))),
       ';',
+    ),
+
+    // Arguments of a program configuration may also attach a function block
+    // instance of the program to a task: (x := %IX1.1, FB1 WITH SLOW_1)
+    _program_configuration_arguments: $ => seq(
+      '(',
+      commaSep(choice($.argument, $.output_argument, $.task_association)),
+      ')',
+    ),
+
+    task_association: $ => seq(
+      field('name', $.qualified_name),
+      kw('WITH'),
+      field('task', $.identifier),
     ),
 
     // Last, so that keywords (defined earlier) win over it when both match.
