@@ -192,7 +192,6 @@ module.exports = grammar({
     [$._type_spec, $.subrange_type],
     [$.label, $._reference],
     [$.call_statement, $._reference],
-    [$._postfix_target, $._primary_expression],
     [$._top_level_item, $._closed_item_and_fragments],
     [$._reference, $.qualified_name],
   ],
@@ -458,7 +457,7 @@ module.exports = grammar({
       ';',
     ),
 
-    _body: $ => choice($.statement_list, $.il_body, $.sfc_network),
+    _body: $ => choice($.statement_list, $.il_body, alias($._sfc_body_network, $.sfc_network)),
 
     // -----------------------------------------------------------------------
     // Data types
@@ -1018,6 +1017,11 @@ module.exports = grammar({
     // Sequential Function Chart (textual)
     // -----------------------------------------------------------------------
     sfc_network: $ => prec.right(repeat1(choice($.sfc_step, $.sfc_transition))),
+
+    // As the body of a POU or action a network starts with a step, so that a TwinCAT
+    // "TRANSITION T:" object after an action with an empty body is not read as the start of a
+    // network inside that body. (Top-level fragments may list transitions alone.)
+    _sfc_body_network: $ => prec.right(seq($.sfc_step, repeat(choice($.sfc_step, $.sfc_transition)))),
 
     sfc_step: $ => prec.right(seq(
       choice(kw('INITIAL_STEP'), alias($._kw_step, 'STEP')),
