@@ -307,6 +307,7 @@ class Collector {
       add(codes::kMissingToken, {prev.end(), prev.end()}, "missing ';' after statement", "end the statement with ';'");
       return;
     }
+    if (report_after_complete_declaration(node)) return;
     std::string context = describe_context(node);
     add(codes::kSyntaxError, {begin, std::max(begin + 1, begin + static_cast<uint32_t>(first.size()))},
         fmt::format("unexpected '{}'{}", excerpt(first), context));
@@ -401,6 +402,28 @@ class Collector {
       }
     }
     return row[b.size()];
+  }
+
+  // An error region that only wraps complete declarations (a whole FUNCTION that could not be
+  // closed) means the parser broke on what follows it: point there, not at the POU keyword.
+  bool report_after_complete_declaration(SyntaxNode error) {
+    uint32_t n = error.named_child_count();
+    if (n == 0) return false;
+    for (uint32_t i = 0; i < n; ++i) {
+      SyntaxNode c = error.named_child(i);
+      if (c.is_extra()) continue;
+      if (c.kind().find("_declaration") == std::string_view::npos || c.has_error() || c.is_error()) return false;
+    }
+    SyntaxNode last = error.named_child(n - 1);
+    // The first token after the error region.
+    SyntaxNode next = error.next_sibling();
+    while (next && next.child_count() > 0) next = next.child(0);
+    if (!next || next.end() == next.begin()) return false;
+    std::string readable(last.kind());
+    std::replace(readable.begin(), readable.end(), '_', ' ');
+    add(codes::kSyntaxError, next.range(), fmt::format("unexpected '{}' in {}", excerpt(next.text()), readable),
+        "a statement starts with a name or keyword (x := ..., IF, CASE, FOR, a call f(...);)");
+    return true;
   }
 
   // Non-empty leaves below `node` in text order (comments and pragmas skipped), at most `limit`.
