@@ -33,7 +33,7 @@ std::string upper(std::string_view text) {
 
 fs::path library_root() { return fs::path(RUNG_SOURCE_DIR) / "library"; }
 
-std::string relative(const fs::path& path) { return fs::relative(path, library_root()).generic_string(); }
+std::string library_relative(const fs::path& path) { return fs::relative(path, library_root()).generic_string(); }
 
 // One parameter as declared: its name, type text and the attribute pragmas written before it.
 struct Param {
@@ -91,7 +91,7 @@ struct Library {
 };
 
 const Library& library() {
-  static const Library lib = [] {
+  static const Library loaded = [] {
     Library lib;
     WalkResult walk = collect_source_files({library_root()});
     lib.files = walk.files;
@@ -99,7 +99,7 @@ const Library& library() {
     for (const fs::path& path : walk.files) {
       std::string error;
       std::optional<Document> doc = Document::load(path, &error);
-      std::string file = relative(path);
+      std::string file = library_relative(path);
       if (!doc) {
         lib.parse_problems.push_back(file + ": " + error);
         continue;
@@ -149,7 +149,7 @@ const Library& library() {
     }
     return lib;
   }();
-  return lib;
+  return loaded;
 }
 
 const Declaration* find(std::string_view name) {
@@ -290,7 +290,9 @@ TEST(Library, KeyInterfacesMatchTheManuals) {
     const Declaration* d = find(e.name);
     ASSERT_NE(d, nullptr) << e.name << " is not declared";
     EXPECT_EQ(d->kind, e.kind);
-    if (std::string_view(e.kind) == "FUNCTION") EXPECT_EQ(d->return_type, e.return_type);
+    if (std::string_view(e.kind) == "FUNCTION") {
+      EXPECT_EQ(d->return_type, e.return_type);
+    }
     EXPECT_EQ(render(d->inputs), e.inputs);
     EXPECT_EQ(render(d->outputs), e.outputs);
     EXPECT_EQ(render(d->in_outs), e.in_outs);
@@ -375,7 +377,7 @@ TEST(Library, DeclarationsHaveNoBodies) {
     std::optional<Document> doc = Document::load(path, &error);
     ASSERT_TRUE(doc && doc->tree()) << path;
     for (const ast::Pou& pou : ast::outline(doc->tree()->root()).pous) {
-      EXPECT_FALSE(pou.body()) << relative(path) << ": " << pou.name() << " has a body";
+      EXPECT_FALSE(pou.body()) << library_relative(path) << ": " << pou.name() << " has a body";
     }
   }
 }
