@@ -71,6 +71,9 @@ int run_parse_command(const ParseCommandOptions& options, std::FILE* out, std::F
     std::string text = report.dump(2);
     fmt::print(out, "{}\n", text);
   } else if (!options.quiet) {
+    // The summary goes to stderr; flush the report first so that both appear in order when the
+    // two streams end up in the same pipe or file.
+    std::fflush(out);
     std::string_view color = tally.errors ? style.red() : style.green();
     fmt::print(err, "{}{}{}\n", color, tally.summary(), style.reset());
   }
