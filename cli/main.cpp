@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/explain_command.hpp"
 #include "cli/parse_command.hpp"
 
 namespace {
@@ -29,6 +30,10 @@ int main(int argc, char** argv) {
   parse->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
   parse->add_flag("-q,--quiet", parse_options.quiet, "Do not print the closing summary line");
   parse->add_option("-j,--jobs", parse_options.threads, "Files parsed in parallel (default: one per core)");
+
+  std::string explain_code;
+  CLI::App* explain = app.add_subcommand("explain", "Explain a diagnostic code (e.g. rung explain S003), or list all codes");
+  explain->add_option("code", explain_code, "The code, as printed in brackets: error[S003]");
 
   std::string help_topic;
   CLI::App* help = app.add_subcommand("help", "Show help for rung or for one command");
@@ -67,6 +72,8 @@ int main(int argc, char** argv) {
 
   rung::cli::ColorChoice color = rung::cli::ColorChoice::Auto;
   rung::cli::parse_color_choice(color_text, &color);
+
+  if (*explain) return rung::cli::run_explain_command(explain_code, stdout, stderr);
 
   if (*parse) {
     parse_options.color = color;

@@ -76,6 +76,7 @@ int run_parse_command(const ParseCommandOptions& options, std::FILE* out, std::F
     std::fflush(out);
     std::string_view color = tally.errors ? style.red() : style.green();
     fmt::print(err, "{}{}{}\n", color, tally.summary(), style.reset());
+    if (tally.errors + tally.warnings > 0) fmt::print(err, "(run 'rung explain CODE' for what a code means and how to fix it)\n");
   }
   if (io_failed) return 2;
   return tally.errors > 0 ? 1 : 0;

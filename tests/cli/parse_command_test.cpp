@@ -53,6 +53,19 @@ TEST(Cli, HelpListsCommandsAndEachCommandHasHelp) {
   EXPECT_EQ(h.out, p.out);
 }
 
+TEST(Cli, ExplainPrintsTheDocsPageOfACode) {
+  RunResult list = run_rung("explain");
+  EXPECT_EQ(list.exit_code, 0);
+  EXPECT_NE(list.out.find("S003"), std::string::npos);
+  EXPECT_NE(list.out.find("missing-end-keyword"), std::string::npos);
+  RunResult page = run_rung("explain s003");  // codes are case-insensitive
+  EXPECT_EQ(page.exit_code, 0);
+  EXPECT_EQ(page.out, test::read_file(test::source_dir() / "docs/diagnostics/S003.md"));
+  RunResult unknown = run_rung("explain S999");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("S999"), std::string::npos);
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(run_rung("frobnicate").exit_code, 2);
   EXPECT_EQ(run_rung("parse --format xml examples").exit_code, 2);
