@@ -176,6 +176,9 @@ module.exports = grammar({
     $._kw_using,
     $._kw_type,
     $._kw_at,
+    $._kw_configuration,
+    $._kw_resource,
+    $._kw_initial_step,
     $._error_sentinel,
   ],
 
@@ -188,6 +191,9 @@ module.exports = grammar({
     [$.case_element],
     [$._reference, $._il_operator],
     [$.jmp_statement, $._il_operator],
+    [$.return_statement, $._il_operator],
+    [$._bare_call, $._fragment_expression],
+    [$._bare_call, $._reference],
     [$.label, $.il_label],
     [$._type_spec, $.subrange_type],
     [$.label, $._reference],
@@ -342,8 +348,26 @@ module.exports = grammar({
       repeat($.modifier),
       field('name', $.identifier),
       repeat($.modifier),
+      // TwinCAT 3.1.4026 / CODESYS generic constants come before EXTENDS and IMPLEMENTS.
+      optional($.generic_constant_block),
       optional($.extends_clause),
       optional($.implements_clause),
+    ),
+
+    // VAR_GENERIC CONSTANT MaxCount : UDINT := 10; END_VAR
+    generic_constant_block: $ => seq(
+      kw('VAR_GENERIC'),
+      optional(alias(kw('CONSTANT'), $.var_qualifier)),
+      repeat(choice($.var_declaration, $.empty_declaration)),
+      kw('END_VAR'),
+    ),
+
+    // FB_Buffer<100>, FB_Buffer<(2 * cSize)>, FB_Buffer<N>: an instance of a generic FB.
+    generic_type: $ => seq(
+      field('type', $.type_name),
+      token.immediate('<'),
+      commaSep1(field('argument', choice($.integer_literal, $.identifier, $.parenthesized_expression))),
+      '>',
     ),
 
     // Variable blocks and members, then an optional body and more members
@@ -358,7 +382,7 @@ module.exports = grammar({
 
     modifier: _ => choice(...MODIFIERS.map(kw)),
 
-    extends_clause: $ => seq(kw('EXTENDS'), commaSep1($.type_name)),
+    extends_clause: $ => seq(kw('EXTENDS'), commaSep1(choice($.type_name, $.generic_type))),
 
     implements_clause: $ => seq(kw('IMPLEMENTS'), commaSep1($.type_name)),
 
@@ -525,6 +549,7 @@ module.exports = grammar({
 
     _type_spec: $ => choice(
       $.type_name,
+      $.generic_type,
       $.string_type,
       $.array_type,
       $.pointer_type,
@@ -710,7 +735,13 @@ module.exports = grammar({
       field('right', choice($._expression, $.assignment_expression)),
     )),
 
-    call_statement: $ => seq($.call_expression, ';'),
+    call_statement: $ => choice(
+      seq($.call_expression, ';'),
+      // CODESYS 2.3 calls a program without parentheses: "Read_Inputs;".
+      prec.dynamic(-1, seq(alias($._bare_call, $.call_expression), ';')),
+    ),
+
+    _bare_call: $ => field('function', choice($.identifier, $.member_expression)),
 
     if_statement: $ => prec.right(seq(
       kw('IF'),
@@ -788,7 +819,8 @@ module.exports = grammar({
 
     continue_statement: _ => seq(kw('CONTINUE'), ';'),
 
-    return_statement: _ => seq(kw('RETURN'), ';'),
+    // CODESYS/TwinCAT conditional return: RETURN (bDone); leaves the POU when bDone is TRUE.
+    return_statement: $ => seq(kw('RETURN'), optional(field('condition', $._expression)), ';'),
 
     jmp_statement: $ => seq(kw('JMP'), field('label', $.identifier), ';'),
 
@@ -893,6 +925,8 @@ module.exports = grammar({
       optional(seq(
         choice($.argument, $.output_argument),
         repeat(seq(choice(',', '|'), choice($.argument, $.output_argument))),
+        // The input assistant of TwinCAT/CODESYS leaves "ErrorID => ," before the ')'.
+        optional(','),
       )),
       ')',
     ),
@@ -1024,7 +1058,7 @@ module.exports = grammar({
     _sfc_body_network: $ => prec.right(seq($.sfc_step, repeat(choice($.sfc_step, $.sfc_transition)))),
 
     sfc_step: $ => prec.right(seq(
-      choice(kw('INITIAL_STEP'), alias($._kw_step, 'STEP')),
+      choice(alias($._kw_initial_step, 'INITIAL_STEP'), alias($._kw_step, 'STEP')),
       field('name', $.identifier),
       ':',
       repeat($.sfc_action),
@@ -1068,14 +1102,14 @@ module.exports = grammar({
     // Configurations
     // -----------------------------------------------------------------------
     configuration_declaration: $ => seq(
-      kw('CONFIGURATION'),
+      alias($._kw_configuration, 'CONFIGURATION'),
       field('name', $.identifier),
       repeat(choice($.var_block, $.resource_declaration, $.task_configuration, $.program_configuration)),
       kw('END_CONFIGURATION'),
     ),
 
     resource_declaration: $ => seq(
-      kw('RESOURCE'),
+      alias($._kw_resource, 'RESOURCE'),
       field('name', $.identifier),
       optional(seq(kw('ON'), field('processor', $.type_name))),
       repeat(choice($.var_block, $.task_configuration, $.program_configuration)),

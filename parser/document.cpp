@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "parser/containers/read_container.hpp"
 #include "parser/diagnostic_codes.hpp"
+#include "parser/source/flat_comments.hpp"
 #include "parser/syntax_diagnostics.hpp"
 
 namespace rung {
@@ -99,7 +101,30 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
     FilePosition p = position_of_tree_offset(offset);
     return fmt::format("{}:{}", p.line, p.column);
   };
-  for (Diagnostic& d : collect_syntax_diagnostics(*tree_, syntax_options)) {
+  std::vector<Diagnostic> syntax = collect_syntax_diagnostics(*tree_, syntax_options);
+
+  // MATIEC/Beremiz and CODESYS 2.3 do not nest comments: there "(* old (* code *)" is one whole
+  // comment, while the nesting reading leaves it open to the end of the file. When that happens
+  // in a plain file, read the comments flat instead, if that closes them.
+  auto unclosed_comment = [](const std::vector<Diagnostic>& list) {
+    return std::any_of(list.begin(), list.end(),
+                       [](const Diagnostic& d) { return d.code == codes::kUnterminatedComment; });
+  };
+  if (!container_ && unclosed_comment(syntax)) {
+    std::string flat = tree_->text();
+    if (source::read_comments_flat(flat, 0, flat.size()) > 0) {
+      SyntaxTree reparsed = SyntaxTree::parse(std::move(flat), options.parse);
+      if (!reparsed.aborted()) {
+        std::vector<Diagnostic> flat_syntax = collect_syntax_diagnostics(reparsed, syntax_options);
+        if (!unclosed_comment(flat_syntax)) {
+          tree_.emplace(std::move(reparsed));
+          syntax = std::move(flat_syntax);
+        }
+      }
+    }
+  }
+
+  for (Diagnostic& d : syntax) {
     d.range = {file_offset_of(d.range.begin), file_offset_of(d.range.end)};
     if (d.range.end < d.range.begin) d.range.end = d.range.begin;
     for (auto& label : d.labels) label.range = {file_offset_of(label.range.begin), file_offset_of(label.range.end)};

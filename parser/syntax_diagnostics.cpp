@@ -142,7 +142,17 @@ class Collector {
         continue;
       }
       if (node.is_error()) {
+        // Several error regions inside one statement are one mistake: report the first only.
+        if (node.begin() < skip_errors_until_) continue;
         report_error(node);
+        for (SyntaxNode p = node.parent(); p; p = p.parent()) {
+          std::string_view k = p.kind();
+          if (k.size() > 10 && k.substr(k.size() - 10) == "_statement") {
+            skip_errors_until_ = p.end();
+            break;
+          }
+          if (k == "statement_list" || k == "source_file") break;
+        }
         continue;
       }
       if (!node.has_error()) continue;
@@ -280,6 +290,16 @@ class Collector {
           (i + 2 >= up.size() || !std::isalnum(static_cast<unsigned char>(up[i + 2])))) {
         add(codes::kElseIf, {begin, begin + static_cast<uint32_t>(i + 2)}, "unexpected 'ELSE IF' — did you mean ELSIF?",
             "write ELSIF; 'ELSE IF' opens a nested IF that needs its own END_IF");
+        return;
+      }
+    }
+    // An error region that starts with a statement's ';' is about what follows the ';'.
+    if (first == ";" ) {
+      std::vector<SyntaxNode> leaves = leaves_of(node, 8);
+      if (leaves.size() >= 2 && leaves[0].text() == ";") {
+        SyntaxNode next = leaves[1];
+        add(codes::kSyntaxError, next.range(), fmt::format("unexpected '{}': a statement cannot start here", excerpt(next.text())),
+            "a statement starts with a name or keyword (x := ..., IF, CASE, FOR, a call f(...);)");
         return;
       }
     }
@@ -630,6 +650,7 @@ class Collector {
   const SyntaxDiagnosticOptions& options_;
   std::vector<Diagnostic> out_;
   std::vector<uint32_t> line_starts_;
+  uint32_t skip_errors_until_ = 0;
   size_t dropped_ = 0;
 };
 

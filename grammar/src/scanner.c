@@ -7,7 +7,7 @@
  *  - pragmas "{...}", classified by their first word so that the tree tells
  *    attribute, conditional, message, region and other pragmas apart;
  *  - the end of an IL instruction line (only where the grammar expects one);
- *  - contextual keywords (METHOD, PROPERTY, ACTION, STEP, ...): real code uses
+ *  - contextual keywords (METHOD, PROPERTY, ACTION, STEP, CONFIGURATION, ...): real code uses
  *    these words as variable names, so they are keywords only where the
  *    grammar allows them AND the next token looks like the start of a
  *    declaration rather than the rest of a statement ("Step := 1;").
@@ -42,6 +42,9 @@ enum TokenType {
   KW_USING,
   KW_TYPE,
   KW_AT,
+  KW_CONFIGURATION,
+  KW_RESOURCE,
+  KW_INITIAL_STEP,
   ERROR_SENTINEL,
   TOKEN_COUNT
 };
@@ -50,6 +53,8 @@ enum TokenType {
 static const char *const SOFT_KEYWORDS[] = {
     "METHOD", "PROPERTY",  "ACTION", "STEP", "TRANSITION", "GET", "SET",
     "CLASS",  "NAMESPACE", "INTERFACE", "USING", "TYPE", "AT",
+    /* Not in TwinCAT's keyword list: "Configuration REF= x;" and "Resource := 1;" are statements. */
+    "CONFIGURATION", "RESOURCE", "INITIAL_STEP",
 };
 #define SOFT_KEYWORD_COUNT (sizeof(SOFT_KEYWORDS) / sizeof(SOFT_KEYWORDS[0]))
 

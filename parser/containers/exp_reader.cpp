@@ -1,5 +1,7 @@
 #include "parser/containers/exp_reader.hpp"
 
+#include "parser/source/flat_comments.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -293,50 +295,11 @@ class ExpReader {
           break;
         }
       }
-      flatten_range(begin, end);
+      source::read_comments_flat(virtual_, begin, end);
     }
   }
 
-  void flatten_range(uint32_t begin, uint32_t end) {
-    enum class State { Code, Quote, DoubleQuote, Block, Slash, Line } state = State::Code;
-    for (uint32_t k = begin; k < end; ++k) {
-      const char c = virtual_[k];
-      const char next = k + 1 < end ? virtual_[k + 1] : '\0';
-      switch (state) {
-        case State::Code:
-          if (c == '\'')
-            state = State::Quote;
-          else if (c == '"')
-            state = State::DoubleQuote;
-          else if (c == '(' && next == '*')
-            state = State::Block, ++k;
-          else if (c == '/' && next == '*')
-            state = State::Slash, ++k;
-          else if (c == '/' && next == '/')
-            state = State::Line, ++k;
-          break;
-        case State::Quote:
-        case State::DoubleQuote:
-          if (c == '$')
-            ++k;
-          else if ((c == '\'' && state == State::Quote) || (c == '"' && state == State::DoubleQuote))
-            state = State::Code;
-          break;
-        case State::Block:
-          if (c == '*' && next == ')')
-            state = State::Code, ++k;
-          else if (c == '(' && next == '*')
-            virtual_[k] = ' ';
-          break;
-        case State::Slash:
-          if (c == '*' && next == '/') state = State::Code, ++k;
-          break;
-        case State::Line:
-          if (c == '\n' || c == '\r') state = State::Code;
-          break;
-      }
-    }
-  }
+
 
   void blank(const Line& line) { std::fill(virtual_.begin() + line.begin, virtual_.begin() + line.end, ' '); }
 

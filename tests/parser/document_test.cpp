@@ -126,3 +126,26 @@ TEST(Document, ExpWithNestedCommentsOffParsesLikeCodesys) {
 
 }  // namespace
 }  // namespace rung
+
+namespace rung {
+namespace {
+
+TEST(Document, PlainFileWithFlatCommentsIsReadLikeMatiec) {
+  // Beremiz/MATIEC do not nest comments: the first '*)' closes the comment.
+  std::string text =
+      "(* a commented-out call: (* old code **\n"
+      "   foo(1);\n"
+      "*)\n"
+      "PROGRAM p\nVAR x : INT; END_VAR\nx := 1;\nEND_PROGRAM\n";
+  Document doc = Document::from_bytes("plc.st", text);
+  ASSERT_NE(doc.tree(), nullptr);
+  EXPECT_TRUE(doc.diagnostics().empty()) << doc.diagnostics()[0].message;
+  EXPECT_EQ(doc.tree()->root().named_child(1).kind(), "program_declaration");
+  // A comment that stays open either way is still reported.
+  Document broken = Document::from_bytes("b.st", "(* never closed\nPROGRAM p\nEND_PROGRAM\n");
+  ASSERT_FALSE(broken.diagnostics().empty());
+  EXPECT_EQ(broken.diagnostics()[0].code, "S005");
+}
+
+}  // namespace
+}  // namespace rung
