@@ -179,6 +179,7 @@ module.exports = grammar({
     $._kw_configuration,
     $._kw_resource,
     $._kw_initial_step,
+    $._kw_jmp,
     $._error_sentinel,
   ],
 
@@ -822,7 +823,7 @@ module.exports = grammar({
     // CODESYS/TwinCAT conditional return: RETURN (bDone); leaves the POU when bDone is TRUE.
     return_statement: $ => seq(kw('RETURN'), optional(field('condition', $._expression)), ';'),
 
-    jmp_statement: $ => seq(kw('JMP'), field('label', $.identifier), ';'),
+    jmp_statement: $ => seq(alias($._kw_jmp, 'JMP'), field('label', $.identifier), ';'),
 
     label: $ => prec.dynamic(-1, seq(field('name', $.identifier), ':')),
 
@@ -1012,7 +1013,8 @@ module.exports = grammar({
 
     _il_operator: $ => choice(
       alias($.identifier, $.il_operator),
-      ...['AND', 'OR', 'XOR', 'NOT', 'MOD', 'JMP', 'RETURN'].map(w => alias(new RegExp(w, 'i'), $.il_operator)),
+      ...['AND', 'OR', 'XOR', 'NOT', 'MOD', 'RETURN'].map(w => alias(new RegExp(w, 'i'), $.il_operator)),
+      alias($._kw_jmp, $.il_operator),
     ),
 
     il_instruction: $ => choice(

@@ -45,6 +45,7 @@ enum TokenType {
   KW_CONFIGURATION,
   KW_RESOURCE,
   KW_INITIAL_STEP,
+  KW_JMP,
   ERROR_SENTINEL,
   TOKEN_COUNT
 };
@@ -55,6 +56,8 @@ static const char *const SOFT_KEYWORDS[] = {
     "CLASS",  "NAMESPACE", "INTERFACE", "USING", "TYPE", "AT",
     /* Not in TwinCAT's keyword list: "Configuration REF= x;" and "Resource := 1;" are statements. */
     "CONFIGURATION", "RESOURCE", "INITIAL_STEP",
+    /* MATIEC accepts IL operator names as variables: "JMP := 1;" is an assignment. */
+    "JMP",
 };
 #define SOFT_KEYWORD_COUNT (sizeof(SOFT_KEYWORDS) / sizeof(SOFT_KEYWORDS[0]))
 
