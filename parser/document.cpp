@@ -125,9 +125,13 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
   }
 
   for (Diagnostic& d : syntax) {
-    d.range = {file_offset_of(d.range.begin), file_offset_of(d.range.end)};
+    bool empty = d.range.end == d.range.begin;
+    d.range = {file_offset_of(d.range.begin), empty ? file_offset_of(d.range.begin) : file_end_offset_of(d.range.end)};
     if (d.range.end < d.range.begin) d.range.end = d.range.begin;
-    for (auto& label : d.labels) label.range = {file_offset_of(label.range.begin), file_offset_of(label.range.end)};
+    for (auto& label : d.labels) {
+      label.range = {file_offset_of(label.range.begin), file_end_offset_of(label.range.end)};
+      if (label.range.end < label.range.begin) label.range.end = label.range.begin;
+    }
     diagnostics_.push_back(std::move(d));
   }
   sort_diagnostics(diagnostics_);
@@ -137,6 +141,16 @@ uint32_t Document::file_offset_of(uint32_t tree_offset) const {
   if (!container_) return tree_offset;
   auto mapped = container_->to_file_offset(tree_offset);
   return mapped ? *mapped : static_cast<uint32_t>(decoded_->utf8.size());
+}
+
+uint32_t Document::file_end_offset_of(uint32_t tree_end) const {
+  if (!container_ || tree_end == 0) return file_offset_of(tree_end);
+  const containers::Segment* before = container_->segment_at(tree_end - 1);
+  if (before && before->file_begin) {
+    auto mapped = container_->to_file_offset(tree_end - 1);
+    if (mapped) return *mapped + 1;
+  }
+  return file_offset_of(tree_end);
 }
 
 std::optional<uint32_t> Document::tree_offset_of(uint32_t file_offset) const {

@@ -58,6 +58,9 @@ class Document {
   // Maps an offset of the tree text to the file text (identity for plain files). Offsets inside
   // text a container reader synthesized map to the start of the next real segment.
   uint32_t file_offset_of(uint32_t tree_offset) const;
+  // The same for the END of a range: an end right after real text maps to the end of that text,
+  // not to the start of the next real segment (which may be lines further down the XML).
+  uint32_t file_end_offset_of(uint32_t tree_end) const;
   // The inverse, for editors that point into the file: nullopt where the file has no parsed text
   // there (XML markup around a TwinCAT declaration, a blanked .EXP visualisation).
   std::optional<uint32_t> tree_offset_of(uint32_t file_offset) const;

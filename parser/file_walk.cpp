@@ -1,9 +1,12 @@
 #include "parser/file_walk.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
+#include <fstream>
+#include <string>
 #include <system_error>
+
+#include "parser/containers/plcopen_reader.hpp"
 
 namespace rung {
 namespace {
@@ -30,7 +33,17 @@ SourceKind source_kind_of(const std::filesystem::path& path) {
   if (ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tcitf")
     return SourceKind::TwinCat;
   if (ext == ".exp") return SourceKind::CodesysExport;
+  if ((ext == ".xml" || ext == ".plcopen") && is_plcopen_file(path)) return SourceKind::PlcOpenXml;
   return SourceKind::None;
+}
+
+bool is_plcopen_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::string head(8192, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  return containers::looks_like_plcopen(head);
 }
 
 WalkResult collect_source_files(const std::vector<std::filesystem::path>& inputs) {

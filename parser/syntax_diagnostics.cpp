@@ -294,11 +294,12 @@ class Collector {
       }
     }
     // An error region that starts with a statement's ';' is about what follows the ';'.
-    if (first == ";" ) {
+    if (first == ";") {
       std::vector<SyntaxNode> leaves = leaves_of(node, 8);
       if (leaves.size() >= 2 && leaves[0].text() == ";") {
         SyntaxNode next = leaves[1];
-        add(codes::kSyntaxError, next.range(), fmt::format("unexpected '{}': a statement cannot start here", excerpt(next.text())),
+        add(codes::kSyntaxError, next.range(),
+            fmt::format("unexpected '{}': a statement cannot start here", excerpt(next.text())),
             "a statement starts with a name or keyword (x := ..., IF, CASE, FOR, a call f(...);)");
         return;
       }
@@ -333,7 +334,6 @@ class Collector {
         fmt::format("unexpected '{}'{}", excerpt(first), context));
   }
 
-
   // Mistakes people bring from other languages or make by typing: misspelled keywords
   // (ELSEIF, ENDIF, END_IFF), C operators (==, !=, &&, ||), '=' where ':=' assigns.
   bool report_common_mistake(SyntaxNode error) {
@@ -350,9 +350,11 @@ class Collector {
         return true;
       }
       if (t == "==" || t == "!=" || t == "&&" || t == "||" || t == "!") {
-        static constexpr std::pair<std::string_view, std::string_view> kOps[] = {
-            {"==", "compare with '='"}, {"!=", "compare with '<>'"}, {"&&", "write AND (or AND_THEN)"},
-            {"||", "write OR (or OR_ELSE)"}, {"!", "write NOT"}};
+        static constexpr std::pair<std::string_view, std::string_view> kOps[] = {{"==", "compare with '='"},
+                                                                                 {"!=", "compare with '<>'"},
+                                                                                 {"&&", "write AND (or AND_THEN)"},
+                                                                                 {"||", "write OR (or OR_ELSE)"},
+                                                                                 {"!", "write NOT"}};
         for (const auto& [op, fix] : kOps) {
           if (t == op) {
             add(codes::kWrongOperator, leaf.range(), fmt::format("'{}' is not an IEC 61131-3 operator", t),
@@ -365,21 +367,23 @@ class Collector {
         std::string word = upper(t);
         std::string_view meant = misspelled_keyword(word);
         if (!meant.empty()) {
-          add(codes::kMisspelledKeyword, leaf.range(), fmt::format("'{}' is not a keyword — did you mean {}?", t, meant),
-              fmt::format("write {}", meant));
+          add(codes::kMisspelledKeyword, leaf.range(),
+              fmt::format("'{}' is not a keyword — did you mean {}?", t, meant), fmt::format("write {}", meant));
           return true;
         }
       }
       // `a = 1;` at the start of a line: '=' compares in ST, ':=' assigns.
       if (t == "=" && i > 0) {
         SyntaxNode target = leaves[i - 1];
-        bool at_line_start = i < 2 || line_of(leaves[i - 2].end()) < line_of(target.begin()) || leaves[i - 2].text() == ";";
+        bool at_line_start =
+            i < 2 || line_of(leaves[i - 2].end()) < line_of(target.begin()) || leaves[i - 2].text() == ";";
         bool in_for = i >= 2 && upper(leaves[i - 2].text()) == "FOR";
         bool name_like = target.is_named() && !target.text().empty() &&
                          (std::isalpha(static_cast<unsigned char>(target.text()[0])) || target.text()[0] == '_');
         if (name_like && (at_line_start || in_for)) {
           add(codes::kWrongOperator, leaf.range(),
-              in_for ? std::string("FOR needs ':=' to set its counter") : std::string("'=' compares; it does not assign"),
+              in_for ? std::string("FOR needs ':=' to set its counter")
+                     : std::string("'=' compares; it does not assign"),
               in_for ? std::string("write FOR i := 1 TO 10 DO") : std::string("assign with ':='"));
           return true;
         }
@@ -390,10 +394,23 @@ class Collector {
 
   // The keyword a misspelled word most likely stands for, or "" when it is no near miss.
   static std::string_view misspelled_keyword(const std::string& word) {
-    static constexpr std::string_view kKeywords[] = {
-        "END_IF",       "END_CASE",     "END_FOR",       "END_WHILE",        "END_REPEAT",   "END_VAR",
-        "END_TYPE",     "END_STRUCT",   "END_PROGRAM",   "END_FUNCTION",     "END_FUNCTION_BLOCK",
-        "END_METHOD",   "END_PROPERTY", "END_ACTION",    "END_INTERFACE",    "END_UNION",    "ELSIF"};
+    static constexpr std::string_view kKeywords[] = {"END_IF",
+                                                     "END_CASE",
+                                                     "END_FOR",
+                                                     "END_WHILE",
+                                                     "END_REPEAT",
+                                                     "END_VAR",
+                                                     "END_TYPE",
+                                                     "END_STRUCT",
+                                                     "END_PROGRAM",
+                                                     "END_FUNCTION",
+                                                     "END_FUNCTION_BLOCK",
+                                                     "END_METHOD",
+                                                     "END_PROPERTY",
+                                                     "END_ACTION",
+                                                     "END_INTERFACE",
+                                                     "END_UNION",
+                                                     "ELSIF"};
     if (word == "ELSEIF" || word == "ELSE_IF" || word == "ELIF" || word == "ELSIFF") return "ELSIF";
     if (word.rfind("END", 0) != 0 || word.size() < 5) return {};
     std::string_view best;

@@ -9,6 +9,7 @@ std::string_view container_kind_name(ContainerKind kind) {
     case ContainerKind::None: return "none";
     case ContainerKind::TwinCat: return "twincat";
     case ContainerKind::CodesysExp: return "codesys-exp";
+    case ContainerKind::PlcOpen: return "plcopen";
     case ContainerKind::Unsupported: return "unsupported";
   }
   return "none";

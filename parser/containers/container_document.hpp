@@ -18,6 +18,7 @@ enum class ContainerKind {
   None,         // not a container: an ordinary source file, the virtual text is the file text
   TwinCat,      // .TcPOU .TcDUT .TcGVL .TcIO .TcITF
   CodesysExp,   // CODESYS V2.3 .EXP export
+  PlcOpen,      // PLCopen XML (TC6 v2.00/v2.01): CODESYS V3 exports, Beremiz/OpenPLC plc.xml
   Unsupported,  // a container holding no PLC source (e.g. .TcTTO task objects): skipped
 };
 

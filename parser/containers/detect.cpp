@@ -5,6 +5,8 @@
 #include <cctype>
 #include <string>
 
+#include "parser/containers/plcopen_reader.hpp"
+
 namespace rung::containers {
 namespace {
 
@@ -50,6 +52,7 @@ ContainerKind detect_container(std::string_view path, std::string_view text) {
     return ContainerKind::Unsupported;
   }
   if (ext == "exp") return ContainerKind::CodesysExp;
+  if (looks_like_plcopen(text)) return ContainerKind::PlcOpen;
   if (is_twincat_xml(text)) return ContainerKind::TwinCat;
   if (is_codesys_export(text)) return ContainerKind::CodesysExp;
   return ContainerKind::None;

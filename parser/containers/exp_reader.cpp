@@ -1,7 +1,5 @@
 #include "parser/containers/exp_reader.hpp"
 
-#include "parser/source/flat_comments.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +8,7 @@
 #include <vector>
 
 #include "parser/containers/exp_scan.hpp"
+#include "parser/source/flat_comments.hpp"
 
 namespace rung::containers {
 namespace {
@@ -298,8 +297,6 @@ class ExpReader {
       source::read_comments_flat(virtual_, begin, end);
     }
   }
-
-
 
   void blank(const Line& line) { std::fill(virtual_.begin() + line.begin, virtual_.begin() + line.end, ' '); }
 

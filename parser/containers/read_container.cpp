@@ -1,6 +1,7 @@
 #include "parser/containers/read_container.hpp"
 
 #include "parser/containers/exp_reader.hpp"
+#include "parser/containers/plcopen_reader.hpp"
 #include "parser/containers/twincat_reader.hpp"
 
 namespace rung::containers {
@@ -9,6 +10,7 @@ ContainerDocument read_container(ContainerKind kind, std::string_view /*path*/, 
   switch (kind) {
     case ContainerKind::TwinCat: return read_twincat(decoded_text);
     case ContainerKind::CodesysExp: return read_exp(decoded_text);
+    case ContainerKind::PlcOpen: return read_plcopen(decoded_text);
     case ContainerKind::Unsupported: {
       ContainerDocument doc;
       doc.kind = ContainerKind::Unsupported;

@@ -30,10 +30,14 @@ TEST(FileWalk, WalksFoldersSortedAndSkipsHiddenAndBuild) {
   test::write_file(root / "a/readme.md", "");
   test::write_file(root / ".git/x.st", "");
   test::write_file(root / "build/y.st", "");
+  test::write_file(root / "plc.xml",
+                   "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">");
+  test::write_file(root / "other.xml", "<?xml version=\"1.0\"?>\n<config/>");
   WalkResult r = collect_source_files({root, root / "b.st", root / "missing"});
-  ASSERT_EQ(r.files.size(), 2u);
+  ASSERT_EQ(r.files.size(), 3u);
   EXPECT_EQ(r.files[0], root / "a/c.TcPOU");
   EXPECT_EQ(r.files[1], root / "b.st");
+  EXPECT_EQ(r.files[2], root / "plc.xml");  // PLCopen by content; other.xml is not
   ASSERT_EQ(r.errors.size(), 1u);
   EXPECT_NE(r.errors[0].find("missing"), std::string::npos);
   std::filesystem::remove_all(root);

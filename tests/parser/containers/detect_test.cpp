@@ -30,7 +30,8 @@ TEST(DetectContainer, ByContent) {
   EXPECT_EQ(detect_container("object.xml", "<?xml version=\"1.0\"?>\r\n<TcPlcObject Version=\"1.1.0.1\">"),
             ContainerKind::TwinCat);
   EXPECT_EQ(detect_container("object.xml", "<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">"),
-            ContainerKind::None);
+            ContainerKind::PlcOpen);
+  EXPECT_EQ(detect_container("pom.xml", "<project xmlns=\"http://maven.apache.org/POM/4.0.0\">"), ContainerKind::None);
   EXPECT_EQ(detect_container("lib.txt", "\r\n(* @NESTEDCOMMENTS := 'Yes' *)\r\nPROGRAM P"), ContainerKind::CodesysExp);
   EXPECT_EQ(detect_container("a.st", "(* <TcPlcObject> in a comment *)"), ContainerKind::None);
 }

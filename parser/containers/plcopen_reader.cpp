@@ -1,0 +1,879 @@
+#include "parser/containers/plcopen_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <pugixml.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "parser/containers/xml_text.hpp"
+#include "parser/source/line_index.hpp"
+
+namespace rung::containers {
+namespace {
+
+// As in the TwinCAT reader: node values stay byte-identical to the file so that
+// offset_debug() locates them; entities are expanded by append_escaped_text.
+constexpr unsigned parse_flags = (pugi::parse_default | pugi::parse_cdata) & ~pugi::parse_eol & ~pugi::parse_escapes;
+
+constexpr std::string_view codesys_data = "http://www.3s-software.com/plcopenxml/";
+
+// The element name without its namespace prefix ("xhtml:p" -> "p").
+std::string_view local_name(pugi::xml_node node) {
+  const std::string_view name = node.name();
+  const size_t colon = name.find(':');
+  return colon == std::string_view::npos ? name : name.substr(colon + 1);
+}
+
+pugi::xml_node child(pugi::xml_node parent, std::string_view name) {
+  for (const pugi::xml_node c : parent.children()) {
+    if (c.type() == pugi::node_element && local_name(c) == name) return c;
+  }
+  return {};
+}
+
+std::vector<pugi::xml_node> children(pugi::xml_node parent, std::string_view name) {
+  std::vector<pugi::xml_node> out;
+  for (const pugi::xml_node c : parent.children()) {
+    if (c.type() == pugi::node_element && local_name(c) == name) out.push_back(c);
+  }
+  return out;
+}
+
+// The only element child of a type container (<type>, <baseType>, <returnType>).
+pugi::xml_node first_element(pugi::xml_node parent) {
+  for (const pugi::xml_node c : parent.children()) {
+    if (c.type() == pugi::node_element && local_name(c) != "addData" && local_name(c) != "documentation") return c;
+  }
+  return {};
+}
+
+bool is_true(pugi::xml_node element, const char* attribute) {
+  const std::string_view value = element.attribute(attribute).value();
+  return value == "true" || value == "1";
+}
+
+bool is_blank(std::string_view s) {
+  return s.find_first_not_of(" \t\r\n") == std::string_view::npos;
+}
+
+bool ends_with(std::string_view s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
+}
+
+// addData/data elements of `owner` whose name is the CODESYS one ending in `kind`.
+std::vector<pugi::xml_node> codesys_data_of(pugi::xml_node owner, std::string_view kind) {
+  std::vector<pugi::xml_node> out;
+  for (const pugi::xml_node data : children(child(owner, "addData"), "data")) {
+    const std::string_view name = data.attribute("name").value();
+    if (name.substr(0, codesys_data.size()) == codesys_data && name.substr(codesys_data.size()) == kind) {
+      out.push_back(data);
+    }
+  }
+  return out;
+}
+
+// An xsd:duration such as "PT0.02S" (CODESYS task intervals) as an IEC time
+// literal ("T#0.02S"); other values (Beremiz writes "T#100ms") unchanged.
+std::string iec_interval(std::string_view value) {
+  if (value.size() < 3 || value.substr(0, 2) != "PT") return std::string(value);
+  std::string out = "T#";
+  std::string number;
+  for (const char c : value.substr(2)) {
+    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+      number += c;
+    } else if ((c == 'H' || c == 'M' || c == 'S') && !number.empty()) {
+      out += number;
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      number.clear();
+    } else {
+      return std::string(value);
+    }
+  }
+  return number.empty() && out.size() > 2 ? out : std::string(value);
+}
+
+struct TextPiece {
+  uint32_t offset;
+  std::string_view raw;
+  bool escaped;
+  int group;  // pieces of different elements (<xhtml:p>s) are separated by a line end
+};
+
+class PlcOpenReader {
+ public:
+  explicit PlcOpenReader(std::string_view text) : text_(text) {}
+
+  ContainerDocument read() {
+    pugi::xml_document xml;
+    const pugi::xml_parse_result parsed = xml.load_buffer(text_.data(), text_.size(), parse_flags, pugi::encoding_utf8);
+    if (!parsed) report_malformed(parsed);
+
+    const pugi::xml_node root = xml.document_element();
+    if (root && local_name(root) != "project") {
+      issue(offset_of(root),
+            fmt::format("not a PLCopen XML project: the root element is <{}>, not <project>", root.name()));
+    } else if (root) {
+      read_project(root);
+    }
+    ContainerDocument doc = builder_.finish(ContainerKind::PlcOpen);
+    doc.issues = std::move(issues_);
+    doc.objects = std::move(objects_);
+    return doc;
+  }
+
+ private:
+  // ---------------------------------------------------------------------------
+  // Project structure
+  // ---------------------------------------------------------------------------
+
+  void read_project(pugi::xml_node project) {
+    const pugi::xml_node types = child(project, "types");
+    for (const pugi::xml_node type : children(child(types, "dataTypes"), "dataType")) read_data_type(type);
+    for (const pugi::xml_node pou : children(child(types, "pous"), "pou")) read_pou(pou);
+    // CODESYS exports with a device: POUs and types inside the application's addData.
+    const pugi::xml_node instances = child(project, "instances");
+    read_embedded(instances);
+    read_embedded(child(project, "addData"));
+    for (const pugi::xml_node configuration : children(child(instances, "configurations"), "configuration")) {
+      read_configuration(configuration);
+    }
+  }
+
+  void read_embedded(pugi::xml_node node) {
+    for (const pugi::xml_node c : node.children()) {
+      if (c.type() != pugi::node_element) continue;
+      const std::string_view name = local_name(c);
+      if (name == "data") {
+        const std::string_view kind = c.attribute("name").value();
+        if (ends_with(kind, "/pou")) {
+          for (const pugi::xml_node pou : children(c, "pou")) read_pou(pou);
+          continue;
+        }
+        if (ends_with(kind, "/datatype")) {
+          for (const pugi::xml_node type : children(c, "dataType")) read_data_type(type);
+          continue;
+        }
+      }
+      if (name == "pou" || name == "interface" || name == "body") continue;
+      read_embedded(c);
+    }
+  }
+
+  // ---------------------------------------------------------------------------
+  // Data types
+  // ---------------------------------------------------------------------------
+
+  void read_data_type(pugi::xml_node type) {
+    begin_object(attribute(type, "name"), "declaration");
+    ContainerObject object = make_object(type, "TYPE");
+    line_start();
+    syn("TYPE ");
+    attr(type, "name");
+    syn(" : ");
+    const pugi::xml_node base = first_element(child(type, "baseType"));
+    const std::string_view kind = local_name(base);
+    if (kind == "struct") {
+      syn("STRUCT\n");
+      for (const pugi::xml_node member : children(base, "variable")) declaration(member, "  ");
+      syn("END_STRUCT");
+    } else if (kind == "enum") {
+      enum_type(base);
+    } else {
+      type_spec(base);
+    }
+    if (const pugi::xml_node init = child(type, "initialValue")) {
+      syn(" := ");
+      value(init);
+    }
+    syn("; END_TYPE\n");
+    objects_.push_back(std::move(object));
+  }
+
+  void enum_type(pugi::xml_node node) {
+    if (const pugi::xml_node base = first_element(child(node, "baseType"))) {
+      type_spec(base);
+      syn(" ");
+    }
+    syn("(");
+    bool first = true;
+    for (const pugi::xml_node v : children(child(node, "values"), "value")) {
+      if (!first) syn(", ");
+      first = false;
+      attr(v, "name");
+      if (v.attribute("value")) {
+        syn(" := ");
+        attr(v, "value");
+      }
+    }
+    syn(")");
+  }
+
+  // A type as it appears after ':' in a declaration. `node` is the type element
+  // itself (<INT/>, <derived/>, <array>...).
+  void type_spec(pugi::xml_node node) {
+    const std::string_view kind = local_name(node);
+    if (!node) {
+      syn("ANY");  // a missing type: keeps the declaration readable
+    } else if (kind == "derived") {
+      attr(node, "name");
+    } else if (kind == "string" || kind == "wstring") {
+      syn(kind == "string" ? "STRING" : "WSTRING");
+      if (node.attribute("length")) {
+        syn("(");
+        attr(node, "length");
+        syn(")");
+      }
+    } else if (kind == "array") {
+      syn("ARRAY [");
+      bool first = true;
+      for (const pugi::xml_node dimension : children(node, "dimension")) {
+        if (!first) syn(", ");
+        first = false;
+        attr(dimension, "lower");
+        syn("..");
+        attr(dimension, "upper");
+      }
+      syn("] OF ");
+      type_spec(first_element(child(node, "baseType")));
+    } else if (kind == "pointer") {
+      syn("POINTER TO ");
+      type_spec(first_element(child(node, "baseType")));
+    } else if (kind == "subrangeSigned" || kind == "subrangeUnsigned") {
+      type_spec(first_element(child(node, "baseType")));
+      const pugi::xml_node range = child(node, "range");
+      syn(" (");
+      attr(range, "lower");
+      syn("..");
+      attr(range, "upper");
+      syn(")");
+    } else if (kind == "struct") {
+      syn("STRUCT\n");
+      for (const pugi::xml_node member : children(node, "variable")) declaration(member, "    ");
+      syn("  END_STRUCT");
+    } else if (kind == "enum") {
+      enum_type(node);
+    } else {
+      // Elementary types (<INT/>, <TIME/>, <LTIME/>...) are named by their tag.
+      syn(kind);
+    }
+  }
+
+  // An initial value; `node` holds <simpleValue>, <arrayValue> or <structValue>.
+  void value(pugi::xml_node node) {
+    const pugi::xml_node v = first_element(node);
+    const std::string_view kind = local_name(v);
+    if (kind == "simpleValue") {
+      attr(v, "value");
+    } else if (kind == "arrayValue") {
+      syn("[");
+      bool first = true;
+      for (const pugi::xml_node element : children(v, "value")) {
+        if (!first) syn(", ");
+        first = false;
+        if (element.attribute("repetitionValue")) {
+          attr(element, "repetitionValue");
+          syn("(");
+          value(element);
+          syn(")");
+        } else {
+          value(element);
+        }
+      }
+      syn("]");
+    } else if (kind == "structValue") {
+      syn("(");
+      bool first = true;
+      for (const pugi::xml_node element : children(v, "value")) {
+        if (!first) syn(", ");
+        first = false;
+        attr(element, "member");
+        syn(" := ");
+        value(element);
+      }
+      syn(")");
+    } else {
+      syn("0");
+    }
+  }
+
+  // `name AT address : type := value;` for one <variable>.
+  void declaration(pugi::xml_node variable, std::string_view indent) {
+    syn(indent);
+    attr(variable, "name");
+    if (variable.attribute("address")) {
+      syn(" AT ");
+      attr(variable, "address");
+    }
+    syn(" : ");
+    type_spec(first_element(child(variable, "type")));
+    if (const pugi::xml_node init = child(variable, "initialValue")) {
+      syn(" := ");
+      value(init);
+    }
+    syn(";\n");
+  }
+
+  // ---------------------------------------------------------------------------
+  // POUs
+  // ---------------------------------------------------------------------------
+
+  void read_pou(pugi::xml_node pou) {
+    const std::string name = attribute(pou, "name");
+    const std::string_view pou_type = pou.attribute("pouType").value();
+    std::string keyword;
+    if (pou_type == "program") {
+      keyword = "PROGRAM";
+    } else if (pou_type == "function") {
+      keyword = "FUNCTION";
+    } else if (pou_type == "functionBlock") {
+      keyword = "FUNCTION_BLOCK";
+    } else {
+      ContainerObject object = make_object(pou, pou_type.empty() ? "POU" : std::string(pou_type));
+      object.name = name;
+      object.note = fmt::format("pouType \"{}\" is not a program, function or function block; skipped", pou_type);
+      objects_.push_back(std::move(object));
+      return;
+    }
+    begin_object(name, "declaration");
+    ContainerObject main = make_object(pou, keyword);
+
+    line_start();
+    if (!plain_text_interface(pou, "declaration")) {
+      syn(keyword + " ");
+      attr(pou, "name");
+      if (keyword == "FUNCTION") {
+        if (const pugi::xml_node type = first_element(child(child(pou, "interface"), "returnType"))) {
+          syn(" : ");
+          type_spec(type);
+        }
+      }
+      if (keyword == "FUNCTION_BLOCK") inheritance(pou);
+      syn("\n");
+      var_blocks(child(pou, "interface"));
+    }
+    body(pou, "implementation", main);
+    objects_.push_back(std::move(main));
+
+    for (const pugi::xml_node data : codesys_data_of(pou, "method")) {
+      for (const pugi::xml_node method : children(data, "Method")) read_method(method);
+    }
+    for (const pugi::xml_node data : codesys_data_of(pou, "property")) {
+      for (const pugi::xml_node property : children(data, "Property")) read_property(property);
+    }
+    for (const pugi::xml_node action : children(child(pou, "actions"), "action")) {
+      read_sub(action, "ACTION", "END_ACTION", "action ");
+    }
+    for (const pugi::xml_node transition : children(child(pou, "transitions"), "transition")) {
+      read_sub(transition, "TRANSITION", "END_TRANSITION", "transition ");
+    }
+    role_ = "end";
+    line_start();
+    syn("END_" + keyword + "\n");
+  }
+
+  // EXTENDS/IMPLEMENTS from CODESYS' pouinheritance data (in the interface or the POU).
+  void inheritance(pugi::xml_node pou) {
+    std::vector<pugi::xml_node> data = codesys_data_of(child(pou, "interface"), "pouinheritance");
+    for (const pugi::xml_node d : codesys_data_of(pou, "pouinheritance")) data.push_back(d);
+    for (const pugi::xml_node d : data) {
+      const pugi::xml_node inheritance = child(d, "Inheritance");
+      for (const auto& [tag, keyword] : {std::pair{"Extends", " EXTENDS "}, std::pair{"Implements", " IMPLEMENTS "}}) {
+        bool first = true;
+        for (const pugi::xml_node name : children(inheritance, tag)) {
+          syn(first ? keyword : ", ");
+          first = false;
+          element_text(name);
+        }
+      }
+    }
+  }
+
+  void var_blocks(pugi::xml_node interface) {
+    for (const pugi::xml_node list : interface.children()) {
+      if (list.type() != pugi::node_element) continue;
+      const std::string_view kind = local_name(list);
+      std::string_view keyword;
+      if (kind == "inputVars")
+        keyword = "VAR_INPUT";
+      else if (kind == "outputVars")
+        keyword = "VAR_OUTPUT";
+      else if (kind == "inOutVars")
+        keyword = "VAR_IN_OUT";
+      else if (kind == "localVars")
+        keyword = "VAR";
+      else if (kind == "tempVars")
+        keyword = "VAR_TEMP";
+      else if (kind == "externalVars")
+        keyword = "VAR_EXTERNAL";
+      else if (kind == "globalVars")
+        keyword = "VAR_GLOBAL";
+      else
+        continue;  // returnType, addData, documentation; accessVars have no <variable>s
+      var_block(list, keyword);
+    }
+  }
+
+  void var_block(pugi::xml_node list, std::string_view keyword) {
+    line_start();
+    syn(keyword);
+    if (is_true(list, "constant")) syn(" CONSTANT");
+    if (is_true(list, "retain")) syn(" RETAIN");
+    if (is_true(list, "nonretain")) syn(" NON_RETAIN");
+    if (is_true(list, "persistent")) syn(" PERSISTENT");
+    syn("\n");
+    for (const pugi::xml_node variable : children(list, "variable")) declaration(variable, "  ");
+    syn("END_VAR\n");
+  }
+
+  // The declaration CODESYS stored as text (InterfaceAsPlainText), as real text;
+  // false when there is none.
+  bool plain_text_interface(pugi::xml_node owner, const std::string& role) {
+    pugi::xml_node plain = child(owner, "InterfaceAsPlainText");
+    for (const pugi::xml_node holder : {owner, child(owner, "interface")}) {
+      for (const pugi::xml_node data : codesys_data_of(holder, "interfaceasplaintext")) {
+        if (!plain) plain = child(data, "InterfaceAsPlainText");
+      }
+    }
+    if (!plain) return false;
+    const std::vector<TextPiece> pieces = text_pieces(plain);
+    if (!has_code(pieces)) return false;
+    role_ = role;
+    line_start();
+    add_pieces(pieces);
+    line_start();
+    return true;
+  }
+
+  // The body of a POU, method or accessor: textual bodies become real text,
+  // graphical ones are noted on the object.
+  void body(pugi::xml_node owner, const std::string& role, ContainerObject& object) {
+    const pugi::xml_node b = child(owner, "body");
+    if (!b) return;
+    const pugi::xml_node language = body_language(b);
+    if (!language) return;
+    const std::string_view name = local_name(language);
+    if (object.language.empty()) object.language = std::string(name);
+    if (name == "ST" || name == "IL") {
+      const std::vector<TextPiece> pieces = text_pieces(language);
+      if (!has_code(pieces)) return;
+      role_ = role;
+      line_start();
+      add_pieces(pieces);
+      line_start();
+    } else if (object.note.empty()) {
+      object.note = fmt::format("{} implementation is graphical; not read as text", name);
+    }
+  }
+
+  // <ST>, <IL>, <FBD>, <LD>, <SFC>, or a CODESYS CFC body inside <addData>.
+  static pugi::xml_node body_language(pugi::xml_node body) {
+    for (const pugi::xml_node c : body.children()) {
+      if (c.type() != pugi::node_element) continue;
+      const std::string_view name = local_name(c);
+      if (name == "documentation") continue;
+      if (name != "addData") return c;
+      for (const pugi::xml_node data : children(c, "data")) {
+        if (const pugi::xml_node inner = first_element(data)) return inner;
+      }
+    }
+    return {};
+  }
+
+  void read_method(pugi::xml_node method) {
+    const std::string name = attribute(method, "name");
+    const std::string prefix = "method " + name;
+    ContainerObject object = make_object(method, "METHOD");
+    object.name = owner_ + "." + name;
+    if (!plain_text_interface(method, prefix + "/declaration")) {
+      role_ = prefix + "/declaration";
+      line_start();
+      syn("METHOD ");
+      access_modifiers(method);
+      attr(method, "name");
+      if (const pugi::xml_node type = first_element(child(child(method, "interface"), "returnType"))) {
+        syn(" : ");
+        type_spec(type);
+      }
+      syn("\n");
+      var_blocks(child(method, "interface"));
+    }
+    body(method, prefix + "/implementation", object);
+    role_ = prefix + "/declaration";
+    line_start();
+    syn("END_METHOD\n");
+    objects_.push_back(std::move(object));
+  }
+
+  void access_modifiers(pugi::xml_node member) {
+    for (const pugi::xml_node data : codesys_data_of(child(member, "interface"), "accessmodifiers")) {
+      const pugi::xml_node modifiers = child(data, "AccessModifiers");
+      for (const auto& [attribute_name, keyword] :
+           {std::pair{"Private", "PRIVATE "}, std::pair{"Protected", "PROTECTED "}, std::pair{"Internal", "INTERNAL "},
+            std::pair{"Public", "PUBLIC "}}) {
+        if (is_true(modifiers, attribute_name)) syn(keyword);
+      }
+    }
+  }
+
+  void read_property(pugi::xml_node property) {
+    const std::string name = attribute(property, "name");
+    const std::string prefix = "property " + name;
+    ContainerObject object = make_object(property, "PROPERTY");
+    object.name = owner_ + "." + name;
+    if (!plain_text_interface(property, prefix + "/declaration")) {
+      role_ = prefix + "/declaration";
+      line_start();
+      syn("PROPERTY ");
+      access_modifiers(property);
+      attr(property, "name");
+      if (const pugi::xml_node type = first_element(child(child(property, "interface"), "returnType"))) {
+        syn(" : ");
+        type_spec(type);
+      }
+      syn("\n");
+    }
+    for (const auto& [tag, keyword, suffix] :
+         {std::tuple{"GetAccessor", "GET", "/get"}, std::tuple{"SetAccessor", "SET", "/set"}}) {
+      const pugi::xml_node accessor = child(property, tag);
+      if (!accessor) continue;
+      const std::string role = prefix + suffix;
+      role_ = role;
+      line_start();
+      syn(std::string(keyword) + "\n");
+      if (!plain_text_interface(accessor, role + "/declaration")) {
+        role_ = role;
+        var_blocks(child(accessor, "interface"));
+      }
+      body(accessor, role + "/implementation", object);
+      role_ = role;
+      line_start();
+      syn(fmt::format("END_{}\n", keyword));
+    }
+    role_ = prefix + "/declaration";
+    line_start();
+    syn("END_PROPERTY\n");
+    objects_.push_back(std::move(object));
+  }
+
+  // An action or transition: `ACTION name:` + body + `END_ACTION` when the body is
+  // text; graphical or empty ones are only listed.
+  void read_sub(pugi::xml_node sub, const char* keyword, const char* end, const char* role_prefix) {
+    const std::string name = attribute(sub, "name");
+    ContainerObject object = make_object(sub, keyword);
+    object.name = owner_ + "." + name;
+    const std::string role = role_prefix + name;
+    const pugi::xml_node language = body_language(child(sub, "body"));
+    const std::string_view lang = language ? local_name(language) : std::string_view();
+    object.language = std::string(lang);
+    const bool textual = lang == "ST" || lang == "IL";
+    if (textual && has_code(text_pieces(language))) {
+      role_ = role;
+      line_start();
+      syn(fmt::format("{} ", keyword));
+      attr(sub, "name");
+      syn(":\n");
+      body(sub, role, object);
+      role_ = role;
+      line_start();
+      syn(fmt::format("{}\n", end));
+    } else if (language && !textual) {
+      object.note = fmt::format("{} implementation is graphical; not read as text", lang);
+    } else {
+      object.note = "empty; not in the virtual text";
+    }
+    objects_.push_back(std::move(object));
+  }
+
+  // ---------------------------------------------------------------------------
+  // Configurations
+  // ---------------------------------------------------------------------------
+
+  void read_configuration(pugi::xml_node configuration) {
+    begin_object(attribute(configuration, "name"), "configuration");
+    objects_.push_back(make_object(configuration, "CONFIGURATION"));
+    line_start();
+    syn("CONFIGURATION ");
+    attr(configuration, "name");
+    syn("\n");
+    for (const pugi::xml_node globals : children(configuration, "globalVars")) var_block(globals, "VAR_GLOBAL");
+    for (const pugi::xml_node resource : children(configuration, "resource")) {
+      syn("RESOURCE ");
+      attr(resource, "name");
+      syn(" ON PLC\n");
+      for (const pugi::xml_node globals : children(resource, "globalVars")) var_block(globals, "VAR_GLOBAL");
+      for (const pugi::xml_node task : children(resource, "task")) {
+        syn("  TASK ");
+        attr(task, "name");
+        std::vector<std::pair<const char*, const char*>> arguments;
+        if (task.attribute("single")) arguments.emplace_back("SINGLE", "single");
+        if (task.attribute("interval")) arguments.emplace_back("INTERVAL", "interval");
+        if (task.attribute("priority")) arguments.emplace_back("PRIORITY", "priority");
+        if (!arguments.empty()) {
+          syn("(");
+          bool first = true;
+          for (const auto& [parameter, attribute_name] : arguments) {
+            if (!first) syn(", ");
+            first = false;
+            syn(fmt::format("{} := ", parameter));
+            if (std::string_view(attribute_name) == "interval") {
+              interval(task);
+            } else {
+              attr(task, attribute_name);
+            }
+          }
+          syn(")");
+        }
+        syn(";\n");
+      }
+      for (const pugi::xml_node task : children(resource, "task")) {
+        for (const pugi::xml_node instance : children(task, "pouInstance")) program_instance(instance, task);
+      }
+      for (const pugi::xml_node instance : children(resource, "pouInstance")) program_instance(instance, {});
+      syn("END_RESOURCE\n");
+    }
+    syn("END_CONFIGURATION\n");
+  }
+
+  void interval(pugi::xml_node task) {
+    const std::string value = attribute(task, "interval");
+    const std::string converted = iec_interval(value);
+    if (converted == value) {
+      attr(task, "interval");
+    } else {
+      syn(converted);
+    }
+  }
+
+  void program_instance(pugi::xml_node instance, pugi::xml_node task) {
+    syn("  PROGRAM ");
+    attr(instance, "name");
+    if (task) {
+      // Synthetic: the task's name attribute is already mapped to its TASK line.
+      syn(" WITH ");
+      syn(attribute(task, "name"));
+    }
+    syn(" : ");
+    // CODESYS writes typeName="" for a program called by its own name.
+    if (is_blank(instance.attribute("typeName").value())) {
+      syn(attribute(instance, "name"));
+    } else {
+      attr(instance, "typeName");
+    }
+    syn(";\n");
+  }
+
+  // ---------------------------------------------------------------------------
+  // Text pieces
+  // ---------------------------------------------------------------------------
+
+  // The character data of a formattedText element: the text of its XHTML
+  // children (<xhtml:p>, CODESYS <xhtml>), or its own text when it has none.
+  std::vector<TextPiece> text_pieces(pugi::xml_node element) {
+    std::vector<TextPiece> pieces;
+    int group = 0;
+    bool has_elements = false;
+    for (const pugi::xml_node c : element.children()) {
+      if (c.type() != pugi::node_element) continue;
+      has_elements = true;
+      collect_text(c, group++, pieces);
+    }
+    if (!has_elements) collect_text(element, group, pieces);
+    return pieces;
+  }
+
+  void collect_text(pugi::xml_node element, int group, std::vector<TextPiece>& pieces) {
+    for (const pugi::xml_node node : element.children()) {
+      const bool cdata = node.type() == pugi::node_cdata;
+      if (!cdata && node.type() != pugi::node_pcdata) continue;
+      const std::string_view value = node.value();
+      if (value.empty()) continue;
+      const ptrdiff_t at = node.offset_debug();
+      const bool located = at >= 0 && static_cast<size_t>(at) + value.size() <= text_.size() &&
+                           text_.substr(static_cast<size_t>(at), value.size()) == value;
+      if (!located) {
+        issue(0, fmt::format("could not locate the text of <{}> in the file; positions in it are approximate",
+                             element.name()));
+        continue;
+      }
+      pieces.push_back({static_cast<uint32_t>(at), value, !cdata, group});
+    }
+  }
+
+  static bool has_code(const std::vector<TextPiece>& pieces) {
+    return std::any_of(pieces.begin(), pieces.end(), [](const TextPiece& p) { return !is_blank(p.raw); });
+  }
+
+  void add_pieces(const std::vector<TextPiece>& pieces) {
+    int group = pieces.empty() ? 0 : pieces.front().group;
+    for (const TextPiece& piece : pieces) {
+      if (piece.group != group) {
+        line_start();
+        group = piece.group;
+      }
+      if (piece.escaped) {
+        append_escaped_text(builder_, piece.raw, piece.offset, role_, owner_);
+      } else {
+        builder_.append_real(piece.raw, piece.offset, role_, owner_);
+      }
+      last_char_ = piece.raw.back();
+    }
+  }
+
+  // The text of a small element (<Extends>Base</Extends>) as real text.
+  void element_text(pugi::xml_node element) {
+    for (const TextPiece& piece : text_pieces(element)) {
+      const size_t begin = piece.raw.find_first_not_of(" \t\r\n");
+      if (begin == std::string_view::npos) continue;
+      const size_t end = piece.raw.find_last_not_of(" \t\r\n") + 1;
+      const std::string_view raw = piece.raw.substr(begin, end - begin);
+      const uint32_t offset = piece.offset + static_cast<uint32_t>(begin);
+      if (piece.escaped) {
+        append_escaped_text(builder_, raw, offset, role_, owner_);
+      } else {
+        builder_.append_real(raw, offset, role_, owner_);
+      }
+      last_char_ = raw.back();
+    }
+  }
+
+  // ---------------------------------------------------------------------------
+  // Emitting
+  // ---------------------------------------------------------------------------
+
+  void begin_object(std::string name, std::string role) {
+    owner_ = std::move(name);
+    role_ = std::move(role);
+  }
+
+  ContainerObject make_object(pugi::xml_node element, std::string kind) const {
+    ContainerObject object;
+    object.name = owner_;
+    object.kind = std::move(kind);
+    object.file_offset = offset_of(element);
+    return object;
+  }
+
+  void syn(std::string_view s) {
+    if (s.empty()) return;
+    builder_.append_synthetic(s, role_, owner_);
+    last_char_ = s.back();
+  }
+
+  // Starts a new line unless the text already ends with one.
+  void line_start() {
+    if (!builder_.empty() && last_char_ != '\n') {
+      builder_.append_synthetic("\n", "separator", owner_);
+      last_char_ = '\n';
+    }
+  }
+
+  // An attribute's value: real text on the value in the file (entities
+  // unescaped piece by piece), or synthetic when it cannot be located.
+  void attr(pugi::xml_node element, const char* name) {
+    const pugi::xml_attribute a = element.attribute(name);
+    if (!a) return;
+    if (const auto located = locate_attribute(element, name)) {
+      if (located->second.empty()) return;
+      append_escaped_text(builder_, located->second, located->first, role_, owner_);
+      last_char_ = unescape_xml(located->second).back();
+      return;
+    }
+    syn(unescape_xml(a.value()));
+  }
+
+  // The file offset and raw text of an attribute value, found by reading the
+  // element's start tag (pugixml keeps no offsets for attributes).
+  std::optional<std::pair<uint32_t, std::string_view>> locate_attribute(pugi::xml_node element,
+                                                                        std::string_view name) const {
+    const ptrdiff_t at = element.offset_debug();
+    if (at <= 0 || static_cast<size_t>(at) > text_.size() || text_[static_cast<size_t>(at) - 1] != '<') {
+      return std::nullopt;
+    }
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+    size_t i = static_cast<size_t>(at);
+    while (i < text_.size() && !space(text_[i]) && text_[i] != '>' && text_[i] != '/') ++i;
+    while (i < text_.size()) {
+      while (i < text_.size() && space(text_[i])) ++i;
+      if (i >= text_.size() || text_[i] == '>' || text_[i] == '/') return std::nullopt;
+      const size_t name_begin = i;
+      while (i < text_.size() && !space(text_[i]) && text_[i] != '=' && text_[i] != '>') ++i;
+      const std::string_view attribute_name = text_.substr(name_begin, i - name_begin);
+      while (i < text_.size() && space(text_[i])) ++i;
+      if (i >= text_.size() || text_[i] != '=') return std::nullopt;
+      ++i;
+      while (i < text_.size() && space(text_[i])) ++i;
+      if (i >= text_.size() || (text_[i] != '"' && text_[i] != '\'')) return std::nullopt;
+      const char quote = text_[i++];
+      const size_t close = text_.find(quote, i);
+      if (close == std::string_view::npos) return std::nullopt;
+      if (attribute_name == name) return std::pair{static_cast<uint32_t>(i), text_.substr(i, close - i)};
+      i = close + 1;
+    }
+    return std::nullopt;
+  }
+
+  std::string attribute(pugi::xml_node element, const char* name) const {
+    return unescape_xml(element.attribute(name).value());
+  }
+
+  uint32_t offset_of(pugi::xml_node element) const {
+    // offset_debug() of an element is its name; the element starts at the '<' before it.
+    const ptrdiff_t at = element.offset_debug();
+    if (at <= 0) return 0;
+    return static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(at - 1), text_.size()));
+  }
+
+  void report_malformed(const pugi::xml_parse_result& parsed) {
+    const auto offset = static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(parsed.offset), text_.size()));
+    const source::LineIndex lines(text_);
+    issue(offset,
+          fmt::format("malformed XML at line {}: {}", lines.position_of(offset).line + 1, parsed.description()));
+  }
+
+  void issue(uint32_t offset, std::string message) { issues_.push_back({offset, std::move(message)}); }
+
+  std::string_view text_;
+  VirtualTextBuilder builder_;
+  std::string owner_;
+  std::string role_;
+  char last_char_ = '\n';
+  std::vector<ContainerIssue> issues_;
+  std::vector<ContainerObject> objects_;
+};
+
+}  // namespace
+
+ContainerDocument read_plcopen(std::string_view text) {
+  return PlcOpenReader(text).read();
+}
+
+bool looks_like_plcopen(std::string_view text) {
+  const std::string_view head = text.substr(0, 8192);
+  // The root element: the first tag that is not a declaration, comment or doctype.
+  size_t at = 0;
+  while ((at = head.find('<', at)) != std::string_view::npos) {
+    if (at + 1 < head.size() && (head[at + 1] == '?' || head[at + 1] == '!')) {
+      ++at;
+      continue;
+    }
+    break;
+  }
+  if (at == std::string_view::npos) return false;
+  size_t end = at + 1;
+  while (end < head.size() && !std::isspace(static_cast<unsigned char>(head[end])) && head[end] != '>' &&
+         head[end] != '/') {
+    ++end;
+  }
+  std::string_view root = head.substr(at + 1, end - at - 1);
+  if (const size_t colon = root.find(':'); colon != std::string_view::npos) root = root.substr(colon + 1);
+  if (root != "project") return false;
+  return head.find("www.plcopen.org/xml/tc6_0201", at) != std::string_view::npos ||
+         head.find("www.plcopen.org/xml/tc6_0200", at) != std::string_view::npos;
+}
+
+}  // namespace rung::containers
