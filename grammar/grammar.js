@@ -127,7 +127,8 @@ function varDeclarationCore($) {
     optional(commaSep1(field('name', choice($.identifier, alias($._dotted_name, $.qualified_name))))),
     optional(field('location', $.location)),
     ':',
-    field('type', choice($._type_spec, alias($._inline_struct, $.struct_type), $.variadic_type)),
+    field('type', choice($._type_spec, alias($._inline_struct, $.struct_type), $.variadic_type,
+      alias($._implicit_enum, $.enum_type))),
     optional(field('edge', choice(kw('R_EDGE'), kw('F_EDGE')))),
     optional(field('arguments', choice($.argument_list, $.argument_lists))),
     optional(seq(
@@ -263,6 +264,7 @@ module.exports = grammar({
       $.dereference_expression,
       $.parenthesized_expression,
       alias($._parenthesized_member, $.member_expression),
+      alias($._parenthesized_dereference, $.dereference_expression),
       $.struct_initializer,
       $.array_initializer,
       $._literal,
@@ -871,6 +873,7 @@ module.exports = grammar({
       $._reference,
       $.parenthesized_expression,
       alias($._parenthesized_member, $.member_expression),
+      alias($._parenthesized_dereference, $.dereference_expression),
       $.struct_initializer,
       $.array_initializer,
       $._literal,
@@ -890,10 +893,24 @@ module.exports = grammar({
 
     parenthesized_expression: $ => seq('(', $._expression, ')'),
 
+    // CODESYS implicit enumeration in a declaration: eState : (IDLE, BUSY, ERROR) := IDLE;
+    _implicit_enum: $ => seq(
+      '(',
+      commaSep1($.enum_value),
+      ')',
+      optional(field('base', $.type_name)),
+    ),
+
+    // Dereference of a computed pointer, (pData + i * SIZEOF(INT))^: a value only.
+    _parenthesized_dereference: $ => prec(PREC.POSTFIX, seq(
+      field('operand', $.parenthesized_expression),
+      '^',
+    )),
+
     // Bit or member of a parenthesized value, (a OR b).0: a value only, never
     // assigned (a statement never starts with "(").
     _parenthesized_member: $ => prec(PREC.POSTFIX, seq(
-      field('object', $.parenthesized_expression),
+      field('object', choice($.parenthesized_expression, alias($._parenthesized_dereference, $.dereference_expression))),
       '.',
       field('member', choice($.identifier, $.integer_literal)),
     )),
@@ -974,13 +991,13 @@ module.exports = grammar({
     boolean_literal: _ => choice(kw('TRUE'), kw('FALSE')),
 
     // Unit order is not checked here (a later, semantic check does it).
-    time_literal: _ => token(/(t|time|lt|ltime)#[+-]?([0-9][0-9_]*(\.[0-9]+)?(d|h|m|s|ms|us|ns)_?)+/i),
+    time_literal: _ => token(/(t|time|lt|ltime)#[ \t]*[+-]?([0-9][0-9_]*(\.[0-9]+)?(d|h|m|s|ms|us|ns)_?)+/i),
 
-    date_literal: _ => token(/(d|date|ld|ldate)#[0-9]+-[0-9]+-[0-9]+/i),
+    date_literal: _ => token(/(d|date|ld|ldate)#[ \t]*[0-9]+-[0-9]+-[0-9]+/i),
 
-    time_of_day_literal: _ => token(/(tod|time_of_day|ltod|ltime_of_day)#[0-9]+:[0-9]+(:[0-9]+(\.[0-9]+)?)?/i),
+    time_of_day_literal: _ => token(/(tod|time_of_day|ltod|ltime_of_day)#[ \t]*[0-9]+:[0-9]+(:[0-9]+(\.[0-9]+)?)?/i),
 
-    date_and_time_literal: _ => token(/(dt|date_and_time|ldt|ldate_and_time)#[0-9]+-[0-9]+-[0-9]+-[0-9]+:[0-9]+(:[0-9]+(\.[0-9]+)?)?/i),
+    date_and_time_literal: _ => token(/(dt|date_and_time|ldt|ldate_and_time)#[ \t]*[0-9]+-[0-9]+-[0-9]+-[0-9]+:[0-9]+(:[0-9]+(\.[0-9]+)?)?/i),
 
     string_literal: _ => token(choice(
       /'([^'$\r\n]|\$[^\r\n])*'/,
@@ -1057,7 +1074,18 @@ module.exports = grammar({
     // As the body of a POU or action a network starts with a step, so that a TwinCAT
     // "TRANSITION T:" object after an action with an empty body is not read as the start of a
     // network inside that body. (Top-level fragments may list transitions alone.)
-    _sfc_body_network: $ => prec.right(seq($.sfc_step, repeat(choice($.sfc_step, $.sfc_transition)))),
+    _sfc_body_network: $ => prec.right(seq($.sfc_step, repeat(choice($.sfc_step, $.sfc_transition, $.sfc_action_block)))),
+
+    // An IEC action block inside an SFC network: ACTION name: ... END_ACTION (END_ACTION required
+    // here, so the network can go on with steps and transitions after it).
+    sfc_action_block: $ => prec.right(seq(
+      alias($._kw_action, 'ACTION'),
+      field('name', $.identifier),
+      optional(':'),
+      optional(field('body', choice($.statement_list, $.il_body))),
+      kw('END_ACTION'),
+      optional(';'),
+    )),
 
     sfc_step: $ => prec.right(seq(
       choice(alias($._kw_initial_step, 'INITIAL_STEP'), alias($._kw_step, 'STEP')),

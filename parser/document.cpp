@@ -104,19 +104,19 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
   std::vector<Diagnostic> syntax = collect_syntax_diagnostics(*tree_, syntax_options);
 
   // MATIEC/Beremiz and CODESYS 2.3 do not nest comments: there "(* old (* code *)" is one whole
-  // comment, while the nesting reading leaves it open to the end of the file. When that happens
-  // in a plain file, read the comments flat instead, if that closes them.
-  auto unclosed_comment = [](const std::vector<Diagnostic>& list) {
-    return std::any_of(list.begin(), list.end(),
-                       [](const Diagnostic& d) { return d.code == codes::kUnterminatedComment; });
+  // comment, while the nesting reading leaves it open and swallows code. When a plain file does
+  // not parse and holds such a '(*' inside a comment, read its comments flat too and keep the
+  // reading with fewer errors (containers say how their comments nest).
+  auto errors_in = [](const std::vector<Diagnostic>& list) {
+    return std::count_if(list.begin(), list.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
   };
-  if (!container_ && unclosed_comment(syntax)) {
+  if (!container_ && errors_in(syntax) > 0) {
     std::string flat = tree_->text();
     if (source::read_comments_flat(flat, 0, flat.size()) > 0) {
       SyntaxTree reparsed = SyntaxTree::parse(std::move(flat), options.parse);
       if (!reparsed.aborted()) {
         std::vector<Diagnostic> flat_syntax = collect_syntax_diagnostics(reparsed, syntax_options);
-        if (!unclosed_comment(flat_syntax)) {
+        if (errors_in(flat_syntax) < errors_in(syntax)) {
           tree_.emplace(std::move(reparsed));
           syntax = std::move(flat_syntax);
         }

@@ -228,7 +228,16 @@ static bool followed_by_declaration(TSLexer *lexer, int token) {
   if (c == '{') return true;
   if (c == '(') {
     advance(lexer);
-    return lexer->lookahead == '*';
+    if (lexer->lookahead == '*') return true;
+    /* IEC "TRANSITION (PRIORITY := 1) FROM a TO b" */
+    if (token != KW_TRANSITION) return false;
+    while (is_horizontal_space(lexer->lookahead)) advance(lexer);
+    static const char priority[] = "PRIORITY";
+    for (unsigned i = 0; priority[i]; i++) {
+      if (to_upper(lexer->lookahead) != priority[i]) return false;
+      advance(lexer);
+    }
+    return !is_word_char(lexer->lookahead);
   }
   if (c == '/') {
     advance(lexer);
