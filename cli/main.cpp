@@ -1,6 +1,7 @@
 // The `rung` command: each subcommand is a thin layer over the libraries (architecture rule 1).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <exception>
 #include <string>
 
 #include "cli/explain_command.hpp"
@@ -11,9 +12,25 @@ namespace {
 constexpr const char* kDescription =
     "rung: a text-first toolchain for IEC 61131-3 PLC code (ST, IL, SFC; TwinCAT and CODESYS files)";
 
+int run(int argc, char** argv);
+
 }  // namespace
 
+// Exceptions never escape: a bug in rung must end with a message, not an abort.
 int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "rung: internal error: %s\n(please report it with the input that caused it)\n", e.what());
+  } catch (...) {
+    std::fprintf(stderr, "rung: internal error\n");
+  }
+  return 2;
+}
+
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{kDescription, "rung"};
   app.set_version_flag("-V,--version", std::string("rung ") + RUNG_VERSION);
   app.require_subcommand(0, 1);
@@ -82,3 +99,5 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+}  // namespace

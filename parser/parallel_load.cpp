@@ -29,7 +29,7 @@ void load_documents_in_order(const std::vector<std::filesystem::path>& paths, un
   }
 
   // Workers may run at most `window` files ahead of the consumer, which bounds memory.
-  const size_t window = threads * 4;
+  const size_t window = size_t{threads} * 4;
   std::vector<std::optional<LoadedDocument>> slots(paths.size());
   std::mutex mutex;
   std::condition_variable ready;

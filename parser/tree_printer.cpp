@@ -37,7 +37,7 @@ std::string print_outline(SyntaxNode root, const TreePrintOptions& options) {
   while (true) {
     SyntaxNode n(ts_tree_cursor_current_node(&cursor), root.source());
     if (n.is_named() || n.is_missing() || options.include_anonymous) {
-      out.append(depth * 2, ' ');
+      out.append(size_t{depth} * 2, ' ');
       const char* field = depth > 0 ? ts_tree_cursor_current_field_name(&cursor) : nullptr;
       if (field) fmt::format_to(std::back_inserter(out), "{}: ", field);
       if (n.is_missing()) {

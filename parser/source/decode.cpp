@@ -10,7 +10,7 @@
 namespace rung::source {
 namespace {
 
-constexpr size_t sample_size = 8 * 1024;
+constexpr size_t sample_size = size_t{8} * 1024;
 
 // Collects issues up to the cap, then only counts; flush() adds the summary.
 class IssueSink {

@@ -87,7 +87,7 @@ TEST(Cli, BrokenFileExitsOneWithFileLineColumnAndCaret) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("examples/broken/Mistakes.st:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error[S"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("^"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find('^'), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("\x1b["), std::string::npos) << "no colours when not on a terminal";
   RunResult colored = run_rung("parse --color always examples/broken");
   EXPECT_NE(colored.out.find("\x1b["), std::string::npos);

@@ -4,6 +4,7 @@
 // These tests pin (a) that every file parses without a diagnostic, (b) the interfaces of the key
 // blocks as the seed manuals give them, (c) that no name is declared twice across the libraries,
 // and (d) that every declaration carries a doc comment with a `source:` reference.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -101,7 +102,7 @@ const Library& library() {
       std::optional<Document> doc = Document::load(path, &error);
       std::string file = library_relative(path);
       if (!doc) {
-        lib.parse_problems.push_back(file + ": " + error);
+        lib.parse_problems.push_back(fmt::format("{}: {}", file, error));
         continue;
       }
       for (const Diagnostic& d : doc->diagnostics()) {
@@ -112,7 +113,7 @@ const Library& library() {
       ast::Outline outline = ast::outline(doc->tree()->root());
       auto check_doc = [&](SyntaxNode node, const std::string& name) {
         std::string comment = doc_comment(top_level(node));
-        if (comment.find("source:") == std::string::npos) lib.undocumented.push_back(file + ": " + name);
+        if (comment.find("source:") == std::string::npos) lib.undocumented.push_back(fmt::format("{}: {}", file, name));
       };
       for (const ast::Pou& pou : outline.pous) {
         Declaration d;

@@ -92,7 +92,7 @@ TEST(BadInput, LargeFileParsesCompletely) {
       "FUNCTION_BLOCK FB_X\nVAR_INPUT\n  bIn : BOOL;\nEND_VAR\nVAR\n  n : DINT;\nEND_VAR\n"
       "IF bIn THEN\n  n := n + 1;\nELSE\n  n := 0;\nEND_IF\nEND_FUNCTION_BLOCK\n\n";
   std::string text;
-  while (text.size() < 8u * 1024 * 1024) text += unit;
+  while (text.size() < size_t{8} * 1024 * 1024) text += unit;
   Document doc = Document::from_bytes("large.st", text);
   ASSERT_NE(doc.tree(), nullptr);
   EXPECT_TRUE(doc.diagnostics().empty());

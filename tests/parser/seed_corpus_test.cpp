@@ -159,8 +159,12 @@ TEST(SeedCorpus, OnlyExamplesMarkedWrongOrIncompleteFailToParse) {
       std::string text = test::read_file(root / file);
       std::string phrase = defect_phrase(leading_comments(text));
       if (phrase.empty() && body_has_elision(text)) phrase = "code contains an elision line (...)";
-      out += file + "  " + (phrase.empty() ? "TODO header does not admit a defect" : phrase) +
-             "  [rung: " + first_error + "]\n";
+      out += file;
+      out += "  ";
+      out += phrase.empty() ? "TODO header does not admit a defect" : phrase;
+      out += "  [rung: ";
+      out += first_error;
+      out += "]\n";
     }
     test::write_file(list_path, out);
     return;

@@ -217,7 +217,7 @@ TEST(PlcOpenReader, CodesysExportLayout) {
            "VAR PERSISTENT\n  nRuns : UDINT;\nEND_VAR\n",
            "  pSelf : POINTER TO FB_Conveyor;\n  rtStart : Standard.R_TRIG;\n",
            "END_IF\nMETHOD PRIVATE M_Reset : BOOL\nVAR_INPUT\n  xHard : BOOL;\nEND_VAR\n",
-           "M_Reset := TRUE;\nEND_METHOD\nPROPERTY P_Runs : UDINT\nGET\nVAR\n  nCopy : UDINT;\nEND_VAR\n"
+           "M_Reset := TRUE;\nEND_METHOD\nPROPERTY P_Runs : UDINT\nGET\nVAR\n  nCopy : UDINT;\nEND_VAR\n"  // NOLINT(bugprone-suspicious-missing-comma)
            "nCopy := nRuns;\nP_Runs := nCopy;\nEND_GET\nSET\nnRuns := P_Runs;\nEND_SET\nEND_PROPERTY\n"
            "ACTION A_Stop:\neState := E_State.Idle;\nEND_ACTION\nEND_FUNCTION_BLOCK\n",
            "  aSpeeds : ARRAY [1..3] OF INT := [10, 2(20)];\n",

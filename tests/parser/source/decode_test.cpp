@@ -234,7 +234,7 @@ TEST(Decode, LargeInputDecodesCompletely) {
   // Correctness on a big buffer (speed is measured in bench/, not here).
   std::string big;
   const std::string line = "    nCounter := nCounter + 1; (* Z\xC3\xA4hler *)\r\n";
-  while (big.size() < 4 * 1024 * 1024) big += line;
+  while (big.size() < size_t{4} * 1024 * 1024) big += line;
   const DecodedText d = decode(big);
   EXPECT_EQ(d.encoding, Encoding::Utf8);
   EXPECT_EQ(d.utf8.size(), big.size());
