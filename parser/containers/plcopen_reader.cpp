@@ -18,7 +18,6 @@ namespace {
 
 // As in the TwinCAT reader: node values stay byte-identical to the file so that
 // offset_debug() locates them; entities are expanded by append_escaped_text.
-constexpr unsigned parse_flags = (pugi::parse_default | pugi::parse_cdata) & ~pugi::parse_eol & ~pugi::parse_escapes;
 
 constexpr std::string_view codesys_data = "http://www.3s-software.com/plcopenxml/";
 
@@ -110,8 +109,7 @@ class PlcOpenReader {
 
   ContainerDocument read() {
     pugi::xml_document xml;
-    const pugi::xml_parse_result parsed = xml.load_buffer(text_.data(), text_.size(), parse_flags, pugi::encoding_utf8);
-    if (!parsed) report_malformed(parsed);
+    if (auto problem = load_container_xml(xml, text_)) issues_.push_back(std::move(*problem));
 
     const pugi::xml_node root = xml.document_element();
     if (root && local_name(root) != "project") {
@@ -826,13 +824,6 @@ class PlcOpenReader {
     const ptrdiff_t at = element.offset_debug();
     if (at <= 0) return 0;
     return static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(at - 1), text_.size()));
-  }
-
-  void report_malformed(const pugi::xml_parse_result& parsed) {
-    const auto offset = static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(parsed.offset), text_.size()));
-    const source::LineIndex lines(text_);
-    issue(offset,
-          fmt::format("malformed XML at line {}: {}", lines.position_of(offset).line + 1, parsed.description()));
   }
 
   void issue(uint32_t offset, std::string message) { issues_.push_back({offset, std::move(message)}); }

@@ -19,7 +19,6 @@ namespace {
 // byte-identical to the file, so offset_debug() + value length is exactly the
 // node's extent and positions can be mapped 1:1. Entities are expanded by
 // append_escaped_text, which keeps the mapping.
-constexpr unsigned parse_flags = (pugi::parse_default | pugi::parse_cdata) & ~pugi::parse_eol & ~pugi::parse_escapes;
 
 bool is_text_language(std::string_view name) {
   return name == "ST" || name == "IL";
@@ -36,8 +35,7 @@ class TwinCatReader {
 
   ContainerDocument read() {
     pugi::xml_document xml;
-    const pugi::xml_parse_result parsed = xml.load_buffer(text_.data(), text_.size(), parse_flags, pugi::encoding_utf8);
-    if (!parsed) report_malformed(parsed);
+    if (auto problem = load_container_xml(xml, text_)) issues_.push_back(std::move(*problem));
 
     const pugi::xml_node root = xml.document_element();
     if (root && std::string_view(root.name()) != "TcPlcObject") {
@@ -53,13 +51,6 @@ class TwinCatReader {
   }
 
  private:
-  void report_malformed(const pugi::xml_parse_result& parsed) {
-    const auto offset = static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(parsed.offset), text_.size()));
-    const source::LineIndex lines(text_);
-    issue(offset,
-          fmt::format("malformed XML at line {}: {}", lines.position_of(offset).line + 1, parsed.description()));
-  }
-
   void read_objects(pugi::xml_node root) {
     for (const pugi::xml_node element : root.children()) {
       if (element.type() != pugi::node_element) continue;

@@ -1,7 +1,11 @@
 #include "parser/containers/xml_text.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <optional>
 
+#include "parser/source/line_index.hpp"
 #include "parser/source/utf8.hpp"
 
 namespace rung::containers {
@@ -93,6 +97,16 @@ std::string unescape_xml(std::string_view raw) {
       raw, [&](std::string_view run, size_t) { out.append(run); },
       [&](std::string_view replacement, size_t) { out.append(replacement); });
   return out;
+}
+
+std::optional<ContainerIssue> load_container_xml(pugi::xml_document& xml, std::string_view text) {
+  constexpr unsigned kFlags = (pugi::parse_default | pugi::parse_cdata) & ~pugi::parse_eol & ~pugi::parse_escapes;
+  const pugi::xml_parse_result parsed = xml.load_buffer(text.data(), text.size(), kFlags, pugi::encoding_utf8);
+  if (parsed) return std::nullopt;
+  const auto offset = static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(parsed.offset), text.size()));
+  const source::LineIndex lines(text);
+  return ContainerIssue{
+      offset, fmt::format("malformed XML at line {}: {}", lines.position_of(offset).line + 1, parsed.description())};
 }
 
 }  // namespace rung::containers

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <pugixml.hpp>
 #include <string>
 #include <string_view>
 
@@ -19,5 +21,10 @@ void append_escaped_text(VirtualTextBuilder& builder, std::string_view raw, uint
 
 // The unescaped text of an attribute value or character data (no positions).
 std::string unescape_xml(std::string_view raw);
+
+// Loads a container's XML so that node offsets are file offsets: CDATA kept as nodes, no line-end
+// normalisation, no entity decoding (readers unescape text themselves, mapping it piecewise).
+// Returns the issue to report when the XML is malformed; what could be read stays in `xml`.
+std::optional<ContainerIssue> load_container_xml(pugi::xml_document& xml, std::string_view text);
 
 }  // namespace rung::containers
