@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/explain_command.hpp"
+#include "cli/init_command.hpp"
 #include "cli/parse_command.hpp"
 
 namespace {
@@ -49,8 +50,15 @@ int run(int argc, char** argv) {
   parse->add_option("-j,--jobs", parse_options.threads, "Files parsed in parallel (default: one per core)");
 
   std::string explain_code;
-  CLI::App* explain = app.add_subcommand("explain", "Explain a diagnostic code (e.g. rung explain S003), or list all codes");
+  CLI::App* explain =
+      app.add_subcommand("explain", "Explain a diagnostic code (e.g. rung explain S003), or list all codes");
   explain->add_option("code", explain_code, "The code, as printed in brackets: error[S003]");
+
+  std::string init_dir;
+  bool init_force = false;
+  CLI::App* init = app.add_subcommand("init", "Write a commented rung.toml for a project folder");
+  init->add_option("dir", init_dir, "The project folder (default: the current folder)");
+  init->add_flag("--force", init_force, "Overwrite an existing rung.toml");
 
   std::string help_topic;
   CLI::App* help = app.add_subcommand("help", "Show help for rung or for one command");
@@ -90,6 +98,7 @@ int run(int argc, char** argv) {
   rung::cli::ColorChoice color = rung::cli::ColorChoice::Auto;
   rung::cli::parse_color_choice(color_text, &color);
 
+  if (*init) return rung::cli::run_init_command(init_dir, init_force, stdout, stderr);
   if (*explain) return rung::cli::run_explain_command(explain_code, stdout, stderr);
 
   if (*parse) {

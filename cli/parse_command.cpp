@@ -55,6 +55,10 @@ int run_parse_command(const ParseCommandOptions& options, std::FILE* out, std::F
           FilePosition p = doc.position_of_tree_offset(offset);
           return fmt::format("{}:{}", p.line, p.column);
         };
+        tree_options.describe_end_position = [&doc](uint32_t offset) {
+          FilePosition p = doc.position_of_file_offset(doc.file_end_offset_of(offset));
+          return fmt::format("{}:{}", p.line, p.column);
+        };
         fmt::print(out, "{}{}{}\n{}", style.bold(), doc.path(), style.reset(),
                    print_outline(doc.tree()->root(), tree_options));
       }
@@ -76,7 +80,8 @@ int run_parse_command(const ParseCommandOptions& options, std::FILE* out, std::F
     std::fflush(out);
     std::string_view color = tally.errors ? style.red() : style.green();
     fmt::print(err, "{}{}{}\n", color, tally.summary(), style.reset());
-    if (tally.errors + tally.warnings > 0) fmt::print(err, "(run 'rung explain CODE' for what a code means and how to fix it)\n");
+    if (tally.errors + tally.warnings > 0)
+      fmt::print(err, "(run 'rung explain CODE' for what a code means and how to fix it)\n");
   }
   if (io_failed) return 2;
   return tally.errors > 0 ? 1 : 0;

@@ -34,6 +34,11 @@ constexpr std::array kCodes = {
                        "A word that is almost a keyword (ELSEIF, ENDIF, END_IFF) where the keyword belongs."},
     DiagnosticCodeInfo{codes::kWrongOperator, Severity::Error, "wrong-operator",
                        "An operator from another language (==, !=, &&, ||, !) or '=' where ':=' assigns."},
+    DiagnosticCodeInfo{codes::kConfigSyntax, Severity::Error, "rung-toml-syntax", "rung.toml is not valid TOML."},
+    DiagnosticCodeInfo{codes::kConfigUnknownKey, Severity::Warning, "rung-toml-unknown-key",
+                       "rung.toml has a key or diagnostic code rung does not know (often a typo)."},
+    DiagnosticCodeInfo{codes::kConfigBadValue, Severity::Error, "rung-toml-bad-value",
+                       "A rung.toml setting has a value of the wrong kind or out of range."},
 };
 
 }  // namespace

@@ -36,6 +36,9 @@ inline constexpr std::string_view kTooManyErrors = "S012";
 inline constexpr std::string_view kIoError = "S013";
 inline constexpr std::string_view kMisspelledKeyword = "S014";
 inline constexpr std::string_view kWrongOperator = "S015";
+inline constexpr std::string_view kConfigSyntax = "P001";
+inline constexpr std::string_view kConfigUnknownKey = "P002";
+inline constexpr std::string_view kConfigBadValue = "P003";
 }  // namespace codes
 
 }  // namespace rung

@@ -48,6 +48,30 @@ Diagnostic make(std::string_view code, Severity severity, TextRange range, std::
   return d;
 }
 
+// Whether text starts (after a BOM-less blank prefix) like an XML document.
+bool looks_like_xml(std::string_view text) {
+  size_t i = text.find_first_not_of(" \t\r\n");
+  return i != std::string_view::npos && text.compare(i, 5, "<?xml") == 0;
+}
+
+// The name of the root element, skipping the declaration, comments and DOCTYPE.
+std::string xml_root_name(std::string_view text) {
+  size_t i = 0;
+  while ((i = text.find('<', i)) != std::string_view::npos) {
+    if (text.compare(i, 4, "<!--") == 0) {
+      size_t end = text.find("-->", i);
+      if (end == std::string_view::npos) break;
+      i = end + 3;
+    } else if (text.compare(i, 2, "<?") == 0 || text.compare(i, 2, "<!") == 0) {
+      ++i;
+    } else {
+      size_t end = text.find_first_of(" \t\r\n/>", i + 1);
+      return std::string(text.substr(i + 1, (end == std::string_view::npos ? text.size() : end) - i - 1));
+    }
+  }
+  return "?";
+}
+
 }  // namespace
 
 void Document::build(std::string_view bytes, const DocumentOptions& options) {
@@ -73,6 +97,14 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
 
   std::string tree_text;
   auto kind = containers::detect_container(path_, decoded_->utf8);
+  if (kind == containers::ContainerKind::None && looks_like_xml(decoded_->utf8)) {
+    // An XML file that is no container rung knows: parsing it as ST would only produce noise.
+    diagnostics_.push_back(
+        make(codes::kContainer, Severity::Error, {0, 0},
+             fmt::format("XML file with root <{}> is not a format rung reads", xml_root_name(decoded_->utf8)),
+             "rung reads TwinCAT (.TcPOU, ...), CODESYS .EXP and PLCopen XML files"));
+    return;
+  }
   if (kind == containers::ContainerKind::Unsupported) {
     // A vendor object that holds no PLC source (e.g. a TwinCAT task object): nothing to parse.
     return;

@@ -48,8 +48,10 @@ std::string print_outline(SyntaxNode root, const TreePrintOptions& options) {
         out += quoted(n.kind());
       }
       if (options.describe_position) {
+        const auto& describe_end =
+            options.describe_end_position ? options.describe_end_position : options.describe_position;
         fmt::format_to(std::back_inserter(out), " [{}-{}]", options.describe_position(n.begin()),
-                       options.describe_position(n.end()));
+                       describe_end(n.end()));
       } else {
         fmt::format_to(std::back_inserter(out), " [{}-{}]", n.begin(), n.end());
       }

@@ -12,6 +12,9 @@ namespace rung {
 struct TreePrintOptions {
   // Renders an offset as "line:col"; the outline shows node spans with it.
   std::function<std::string(uint32_t offset)> describe_position;
+  // Renders the END of a range (defaults to describe_position): for container files an end must
+  // map to the end of the node's own text, not to the start of the next real text.
+  std::function<std::string(uint32_t offset)> describe_end_position;
   bool include_anonymous = false;  // keywords and punctuation too
   bool include_text = true;        // leaf text after named leaves
 };

@@ -7,6 +7,8 @@
 #include <optional>
 #include <pugixml.hpp>
 #include <string>
+#include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -96,6 +98,144 @@ std::string iec_interval(std::string_view value) {
   return number.empty() && out.size() > 2 ? out : std::string(value);
 }
 
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// An IEC identifier: a letter or '_', then letters, digits and '_'. Bytes of
+// UTF-8 characters are accepted as letters (CODESYS allows them in names).
+bool is_identifier(std::string_view name) {
+  if (name.empty()) return false;
+  const auto letter = [](char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || static_cast<unsigned char>(c) >= 0x80;
+  };
+  if (!letter(name.front())) return false;
+  return std::all_of(name.begin(), name.end(),
+                     [&](char c) { return letter(c) || std::isdigit(static_cast<unsigned char>(c)); });
+}
+
+// Skips blanks and ST comments ((* *), /* */, //) from `at`; returns where code starts.
+size_t skip_blanks_and_comments(std::string_view s, size_t at) {
+  while (at < s.size()) {
+    const char c = s[at];
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+      ++at;
+    } else if (s.compare(at, 2, "(*") == 0 || s.compare(at, 2, "/*") == 0) {
+      const size_t close = s.find(s[at] == '(' ? "*)" : "*/", at + 2);
+      if (close == std::string_view::npos) return s.size();
+      at = close + 2;
+    } else if (s.compare(at, 2, "//") == 0) {
+      const size_t eol = s.find('\n', at);
+      if (eol == std::string_view::npos) return s.size();
+      at = eol + 1;
+    } else {
+      break;
+    }
+  }
+  return at;
+}
+
+bool starts_with(std::string_view s, std::string_view prefix) {
+  return s.substr(0, prefix.size()) == prefix;
+}
+
+// What an ST body really holds when it is not ST: OpenPLC Editor v4 stores C/C++
+// (Arduino) and Python blocks in <ST>. "" when the text looks like ST.
+std::string_view foreign_language(std::string_view code) {
+  const size_t begin = skip_blanks_and_comments(code, 0);
+  const std::string_view first = code.substr(begin, code.find('\n', begin) - begin);
+  for (const std::string_view directive : {"#include", "#define", "#pragma", "#ifdef", "#ifndef"}) {
+    if (starts_with(first, directive)) return "C/C++";
+  }
+  // Python: "import x", "from x import y", "def f(...):" at the start of a line.
+  const auto python_line = [](std::string_view line) {
+    if (starts_with(line, "import ") ||
+        (starts_with(line, "from ") && line.find(" import ") != std::string_view::npos)) {
+      return true;
+    }
+    if (!starts_with(line, "def ")) return false;
+    const size_t open = line.find('(');
+    const size_t close = line.rfind(')');
+    return open != std::string_view::npos && close != std::string_view::npos && open < close &&
+           line.substr(close + 1).find(':') != std::string_view::npos;
+  };
+  if (python_line(first)) return "Python";
+  // Arduino sketches: "void setup(" / "void loop(" on a line of their own.
+  size_t line_begin = 0;
+  while (line_begin < code.size()) {
+    size_t line_end = code.find('\n', line_begin);
+    if (line_end == std::string_view::npos) line_end = code.size();
+    std::string_view line = code.substr(line_begin, line_end - line_begin);
+    line.remove_prefix(std::min(line.size(), line.find_first_not_of(" \t")));
+    if (starts_with(line, "void setup(") || starts_with(line, "void loop(")) return "C/C++";
+    line_begin = line_end + 1;
+  }
+  return {};
+}
+
+// Where markup that starts at `at` ('<' of a comment, CDATA section, processing
+// instruction or doctype) ends: just past its terminator; npos when it is none
+// of these or is not terminated.
+size_t skip_special_markup(std::string_view text, size_t at) {
+  const auto past = [&](std::string_view terminator, size_t from) {
+    const size_t end = text.find(terminator, from);
+    return end == std::string_view::npos ? text.size() : end + terminator.size();
+  };
+  if (text.compare(at, 4, "<!--") == 0) return past("-->", at + 4);
+  if (text.compare(at, 9, "<![CDATA[") == 0) return past("]]>", at + 9);
+  if (text.compare(at, 2, "<?") == 0) return past("?>", at + 2);
+  if (text.compare(at, 2, "<!") == 0) {
+    // <!DOCTYPE ...>, possibly with an internal subset in [...].
+    const size_t bracket = text.find('[', at);
+    const size_t close = text.find('>', at);
+    if (bracket != std::string_view::npos && bracket < close) return past(">", past("]", bracket));
+    return past(">", at + 2);
+  }
+  return std::string_view::npos;
+}
+
+// The offset of the first raw '<' inside an attribute value. pugixml accepts it
+// (CODESYS writes creationDateTime="<NORMALIZED>" when told to hide dates), but
+// XML forbids it and other tools reject the file.
+std::optional<size_t> lt_in_attribute(std::string_view text) {
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  size_t at = 0;
+  while ((at = text.find('<', at)) != std::string_view::npos) {
+    if (const size_t skipped = skip_special_markup(text, at); skipped != std::string_view::npos) {
+      at = skipped;
+      continue;
+    }
+    size_t i = at + 1;
+    if (i < text.size() && text[i] == '/') {
+      at = i;
+      continue;
+    }
+    while (i < text.size() && !space(text[i]) && text[i] != '>' && text[i] != '/') ++i;
+    // Attributes: name = "value" ... until '>' or '/>'.
+    while (true) {
+      while (i < text.size() && space(text[i])) ++i;
+      if (i >= text.size() || text[i] == '>' || text[i] == '/' || text[i] == '<') break;
+      while (i < text.size() && !space(text[i]) && text[i] != '=' && text[i] != '>' && text[i] != '<') ++i;
+      while (i < text.size() && space(text[i])) ++i;
+      if (i >= text.size() || text[i] != '=') break;
+      ++i;
+      while (i < text.size() && space(text[i])) ++i;
+      if (i >= text.size() || (text[i] != '"' && text[i] != '\'')) break;
+      const char quote = text[i];
+      const size_t close = text.find(quote, i + 1);
+      if (close == std::string_view::npos) return std::nullopt;
+      if (const size_t lt = text.substr(i + 1, close - i - 1).find('<'); lt != std::string_view::npos) {
+        return i + 1 + lt;
+      }
+      i = close + 1;
+    }
+    at = i;
+  }
+  return std::nullopt;
+}
+
 struct TextPiece {
   uint32_t offset;
   std::string_view raw;
@@ -110,6 +250,11 @@ class PlcOpenReader {
   ContainerDocument read() {
     pugi::xml_document xml;
     if (auto problem = load_container_xml(xml, text_)) issues_.push_back(std::move(*problem));
+    if (const auto lt = lt_in_attribute(text_)) {
+      const source::LineIndex lines(text_);
+      issue(static_cast<uint32_t>(*lt), fmt::format("malformed XML at line {}: '<' inside an attribute value",
+                                                    lines.position_of(static_cast<uint32_t>(*lt)).line + 1));
+    }
 
     const pugi::xml_node root = xml.document_element();
     if (root && local_name(root) != "project") {
@@ -131,6 +276,7 @@ class PlcOpenReader {
 
   void read_project(pugi::xml_node project) {
     const pugi::xml_node types = child(project, "types");
+    collect_data_types(project);
     for (const pugi::xml_node type : children(child(types, "dataTypes"), "dataType")) read_data_type(type);
     for (const pugi::xml_node pou : children(child(types, "pous"), "pou")) read_pou(pou);
     // CODESYS exports with a device: POUs and types inside the application's addData.
@@ -140,6 +286,35 @@ class PlcOpenReader {
     for (const pugi::xml_node configuration : children(child(instances, "configurations"), "configuration")) {
       read_configuration(configuration);
     }
+    // CODESYS exports of an application without its device: the application's
+    // resource (tasks, GVLs, POUs) stands in the project's addData.
+    for (const pugi::xml_node data : codesys_data_of(project, "application")) {
+      for (const pugi::xml_node resource : children(data, "resource")) read_application(resource);
+    }
+  }
+
+  // Every dataType of the file by lower-case name, so that a variable of a
+  // derived type can be resolved (to quote a string's initial value).
+  void collect_data_types(pugi::xml_node node) {
+    for (const pugi::xml_node c : node.children()) {
+      if (c.type() != pugi::node_element) continue;
+      const std::string_view name = local_name(c);
+      if (name == "dataType") {
+        data_types_.emplace(lower(attribute(c, "name")), c);
+      } else if (name != "pou" && name != "body" && name != "interface") {
+        collect_data_types(c);
+      }
+    }
+  }
+
+  // Follows derived type names to the type they stand for (at most a few levels).
+  pugi::xml_node resolve(pugi::xml_node type) const {
+    for (int depth = 0; depth < 16 && local_name(type) == "derived"; ++depth) {
+      const auto found = data_types_.find(lower(unescape_xml(type.attribute("name").value())));
+      if (found == data_types_.end()) return {};
+      type = first_element(child(found->second, "baseType"));
+    }
+    return type;
   }
 
   void read_embedded(pugi::xml_node node) {
@@ -148,6 +323,10 @@ class PlcOpenReader {
       const std::string_view name = local_name(c);
       if (name == "data") {
         const std::string_view kind = c.attribute("name").value();
+        if (ends_with(kind, "/interface")) {
+          for (const pugi::xml_node interface : children(c, "Interface")) read_interface(interface);
+          continue;
+        }
         if (ends_with(kind, "/pou")) {
           for (const pugi::xml_node pou : children(c, "pou")) read_pou(pou);
           continue;
@@ -186,7 +365,7 @@ class PlcOpenReader {
     }
     if (const pugi::xml_node init = child(type, "initialValue")) {
       syn(" := ");
-      value(init);
+      value(init, base);
     }
     syn("; END_TYPE\n");
     objects_.push_back(std::move(object));
@@ -261,13 +440,22 @@ class PlcOpenReader {
     }
   }
 
-  // An initial value; `node` holds <simpleValue>, <arrayValue> or <structValue>.
-  void value(pugi::xml_node node) {
+  // An initial value; `node` holds <simpleValue>, <arrayValue> or <structValue>,
+  // `type` is the type element of what it initialises (none when unknown).
+  void value(pugi::xml_node node, pugi::xml_node type) {
     const pugi::xml_node v = first_element(node);
     const std::string_view kind = local_name(v);
+    type = resolve(type);
+    const std::string_view type_kind = local_name(type);
     if (kind == "simpleValue") {
-      attr(v, "value");
+      if (type_kind == "string" || type_kind == "wstring") {
+        string_value(v, type_kind == "string" ? '\'' : '"');
+      } else {
+        attr(v, "value");
+      }
     } else if (kind == "arrayValue") {
+      const pugi::xml_node element_type =
+          type_kind == "array" ? first_element(child(type, "baseType")) : pugi::xml_node();
       syn("[");
       bool first = true;
       for (const pugi::xml_node element : children(v, "value")) {
@@ -276,10 +464,10 @@ class PlcOpenReader {
         if (element.attribute("repetitionValue")) {
           attr(element, "repetitionValue");
           syn("(");
-          value(element);
+          value(element, element_type);
           syn(")");
         } else {
-          value(element);
+          value(element, element_type);
         }
       }
       syn("]");
@@ -291,7 +479,7 @@ class PlcOpenReader {
         first = false;
         attr(element, "member");
         syn(" := ");
-        value(element);
+        value(element, member_type(type, element.attribute("member").value()));
       }
       syn(")");
     } else {
@@ -299,8 +487,81 @@ class PlcOpenReader {
     }
   }
 
+  // The type of a member of a struct type (none when `type` is no struct or lacks it).
+  static pugi::xml_node member_type(pugi::xml_node type, std::string_view member) {
+    if (local_name(type) != "struct") return {};
+    const std::string wanted = lower(unescape_xml(member));
+    for (const pugi::xml_node variable : children(type, "variable")) {
+      if (lower(unescape_xml(variable.attribute("name").value())) == wanted) {
+        return first_element(child(variable, "type"));
+      }
+    }
+    return {};
+  }
+
+  // A string's initial value. Beremiz writes it without quotes (value="test");
+  // rung adds them (synthetic) and escapes ' " $ with a synthetic '$', keeping
+  // each character of the value mapped to the attribute. A value that is already
+  // a quoted literal stands as it is.
+  void string_value(pugi::xml_node simple, char quote) {
+    const std::string unescaped = unescape_xml(simple.attribute("value").value());
+    const size_t first = unescaped.find_first_not_of(" \t\r\n");
+    if (first != std::string::npos && (unescaped[first] == '\'' || unescaped[first] == '"')) {
+      attr(simple, "value");
+      return;
+    }
+    syn(std::string(1, quote));
+    const auto located = locate_attribute(simple, "value");
+    if (!located) {
+      std::string escaped;
+      for (const char c : unescaped) {
+        if (c == '\'' || c == '"' || c == '$') escaped += '$';
+        escaped += c;
+      }
+      syn(escaped);
+    } else {
+      const auto [offset, raw] = *located;
+      // Walks the raw value: each character (or entity) that needs a '$' gets one.
+      size_t run = 0;
+      size_t i = 0;
+      while (i < raw.size()) {
+        size_t next = i + 1;
+        char c = raw[i];
+        if (c == '&') {
+          const size_t semicolon = raw.find(';', i);
+          if (semicolon != std::string_view::npos) {
+            const std::string replacement = unescape_xml(raw.substr(i, semicolon + 1 - i));
+            if (replacement.size() == 1) {
+              c = replacement[0];
+              next = semicolon + 1;
+            }
+          }
+        }
+        if (c == '\'' || c == '"' || c == '$') {
+          if (i > run)
+            append_escaped_text(builder_, raw.substr(run, i - run), offset + static_cast<uint32_t>(run), role_, owner_);
+          syn("$");
+          append_escaped_text(builder_, raw.substr(i, next - i), offset + static_cast<uint32_t>(i), role_, owner_);
+          run = next;
+        }
+        i = next;
+      }
+      if (raw.size() > run) {
+        append_escaped_text(builder_, raw.substr(run), offset + static_cast<uint32_t>(run), role_, owner_);
+      }
+    }
+    syn(std::string(1, quote));
+  }
+
   // `name AT address : type := value;` for one <variable>.
   void declaration(pugi::xml_node variable, std::string_view indent) {
+    const std::string name = attribute(variable, "name");
+    if (!is_identifier(name)) {
+      const auto located = locate_attribute(variable, "name");
+      issue(located ? located->first : offset_of(variable),
+            fmt::format("variable name '{}' is not an IEC identifier; the variable is left out", name));
+      return;
+    }
     syn(indent);
     attr(variable, "name");
     if (variable.attribute("address")) {
@@ -308,10 +569,11 @@ class PlcOpenReader {
       attr(variable, "address");
     }
     syn(" : ");
-    type_spec(first_element(child(variable, "type")));
+    const pugi::xml_node type = first_element(child(variable, "type"));
+    type_spec(type);
     if (const pugi::xml_node init = child(variable, "initialValue")) {
       syn(" := ");
-      value(init);
+      value(init, type);
     }
     syn(";\n");
   }
@@ -459,6 +721,12 @@ class PlcOpenReader {
     if (name == "ST" || name == "IL") {
       const std::vector<TextPiece> pieces = text_pieces(language);
       if (!has_code(pieces)) return;
+      if (const std::string_view foreign = foreign_language(joined_text(pieces)); !foreign.empty()) {
+        if (object.note.empty()) {
+          object.note = fmt::format("{} body holds {} code, not {}; not read as text", name, foreign, name);
+        }
+        return;
+      }
       role_ = role;
       line_start();
       add_pieces(pieces);
@@ -505,6 +773,35 @@ class PlcOpenReader {
     line_start();
     syn("END_METHOD\n");
     objects_.push_back(std::move(object));
+  }
+
+  // A CODESYS interface (project addData .../interface): INTERFACE with its
+  // methods and properties, which have declarations only.
+  void read_interface(pugi::xml_node interface) {
+    begin_object(attribute(interface, "name"), "declaration");
+    ContainerObject object = make_object(interface, "INTERFACE");
+    line_start();
+    if (!plain_text_interface(interface, "declaration")) {
+      syn("INTERFACE ");
+      attr(interface, "name");
+      bool first = true;
+      for (const pugi::xml_node data : children(child(interface, "addData"), "data")) {
+        for (const pugi::xml_node name : children(child(data, "Inheritance"), "Extends")) {
+          syn(first ? " EXTENDS " : ", ");
+          first = false;
+          element_text(name);
+        }
+      }
+      syn("\n");
+    }
+    objects_.push_back(std::move(object));
+    for (const pugi::xml_node method : children(child(interface, "Methods"), "Method")) read_method(method);
+    for (const pugi::xml_node property : children(child(interface, "Properties"), "Property")) {
+      read_property(property);
+    }
+    role_ = "end";
+    line_start();
+    syn("END_INTERFACE\n");
   }
 
   void access_modifiers(pugi::xml_node member) {
@@ -569,13 +866,23 @@ class PlcOpenReader {
     const std::string_view lang = language ? local_name(language) : std::string_view();
     object.language = std::string(lang);
     const bool textual = lang == "ST" || lang == "IL";
-    if (textual && has_code(text_pieces(language))) {
+    std::vector<TextPiece> pieces = textual ? text_pieces(language) : std::vector<TextPiece>();
+    if (textual && has_code(pieces)) {
       role_ = role;
       line_start();
       syn(fmt::format("{} ", keyword));
       attr(sub, "name");
       syn(":\n");
-      body(sub, role, object);
+      // Beremiz writes an ST transition as ":= expression;" (its generator puts
+      // it after "TRANSITION FROM a TO b"). The ':=' is left out of the virtual
+      // text, so that "TRANSITION name:" + the expression is what the grammar reads.
+      if (std::string_view(keyword) == "TRANSITION" && lang == "ST" && drop_leading_assign(pieces)) {
+        line_start();
+        add_pieces(pieces);
+        line_start();
+      } else {
+        body(sub, role, object);
+      }
       role_ = role;
       line_start();
       syn(fmt::format("{}\n", end));
@@ -599,42 +906,57 @@ class PlcOpenReader {
     attr(configuration, "name");
     syn("\n");
     for (const pugi::xml_node globals : children(configuration, "globalVars")) var_block(globals, "VAR_GLOBAL");
-    for (const pugi::xml_node resource : children(configuration, "resource")) {
-      syn("RESOURCE ");
-      attr(resource, "name");
-      syn(" ON PLC\n");
-      for (const pugi::xml_node globals : children(resource, "globalVars")) var_block(globals, "VAR_GLOBAL");
-      for (const pugi::xml_node task : children(resource, "task")) {
-        syn("  TASK ");
-        attr(task, "name");
-        std::vector<std::pair<const char*, const char*>> arguments;
-        if (task.attribute("single")) arguments.emplace_back("SINGLE", "single");
-        if (task.attribute("interval")) arguments.emplace_back("INTERVAL", "interval");
-        if (task.attribute("priority")) arguments.emplace_back("PRIORITY", "priority");
-        if (!arguments.empty()) {
-          syn("(");
-          bool first = true;
-          for (const auto& [parameter, attribute_name] : arguments) {
-            if (!first) syn(", ");
-            first = false;
-            syn(fmt::format("{} := ", parameter));
-            if (std::string_view(attribute_name) == "interval") {
-              interval(task);
-            } else {
-              attr(task, attribute_name);
-            }
-          }
-          syn(")");
-        }
-        syn(";\n");
-      }
-      for (const pugi::xml_node task : children(resource, "task")) {
-        for (const pugi::xml_node instance : children(task, "pouInstance")) program_instance(instance, task);
-      }
-      for (const pugi::xml_node instance : children(resource, "pouInstance")) program_instance(instance, {});
-      syn("END_RESOURCE\n");
-    }
+    for (const pugi::xml_node resource : children(configuration, "resource")) read_resource(resource);
     syn("END_CONFIGURATION\n");
+  }
+
+  // A CODESYS application resource from the project's addData: a configuration
+  // of its own, named (synthetically) after the resource, whose name attribute
+  // is mapped on the RESOURCE line.
+  void read_application(pugi::xml_node resource) {
+    const std::string name = attribute(resource, "name");
+    begin_object(name, "configuration");
+    objects_.push_back(make_object(resource, "CONFIGURATION"));
+    line_start();
+    syn("CONFIGURATION " + name + "\n");
+    read_resource(resource);
+    syn("END_CONFIGURATION\n");
+  }
+
+  void read_resource(pugi::xml_node resource) {
+    syn("RESOURCE ");
+    attr(resource, "name");
+    syn(" ON PLC\n");
+    for (const pugi::xml_node globals : children(resource, "globalVars")) var_block(globals, "VAR_GLOBAL");
+    for (const pugi::xml_node task : children(resource, "task")) {
+      syn("  TASK ");
+      attr(task, "name");
+      std::vector<std::pair<const char*, const char*>> arguments;
+      if (task.attribute("single")) arguments.emplace_back("SINGLE", "single");
+      if (task.attribute("interval")) arguments.emplace_back("INTERVAL", "interval");
+      if (task.attribute("priority")) arguments.emplace_back("PRIORITY", "priority");
+      if (!arguments.empty()) {
+        syn("(");
+        bool first = true;
+        for (const auto& [parameter, attribute_name] : arguments) {
+          if (!first) syn(", ");
+          first = false;
+          syn(fmt::format("{} := ", parameter));
+          if (std::string_view(attribute_name) == "interval") {
+            interval(task);
+          } else {
+            attr(task, attribute_name);
+          }
+        }
+        syn(")");
+      }
+      syn(";\n");
+    }
+    for (const pugi::xml_node task : children(resource, "task")) {
+      for (const pugi::xml_node instance : children(task, "pouInstance")) program_instance(instance, task);
+    }
+    for (const pugi::xml_node instance : children(resource, "pouInstance")) program_instance(instance, {});
+    syn("END_RESOURCE\n");
   }
 
   void interval(pugi::xml_node task) {
@@ -700,6 +1022,37 @@ class PlcOpenReader {
       }
       pieces.push_back({static_cast<uint32_t>(at), value, !cdata, group});
     }
+  }
+
+  // Removes a leading ':=' (after blanks and comments) from the first piece that
+  // holds code, splitting it; false when the code does not start with ':='.
+  static bool drop_leading_assign(std::vector<TextPiece>& pieces) {
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      TextPiece& piece = pieces[k];
+      const size_t at = skip_blanks_and_comments(piece.raw, 0);
+      if (at >= piece.raw.size()) continue;  // only blanks or comments: look in the next piece
+      if (piece.raw.compare(at, 2, ":=") != 0) return false;
+      TextPiece after = piece;
+      after.offset = piece.offset + static_cast<uint32_t>(at + 2);
+      after.raw = piece.raw.substr(at + 2);
+      piece.raw = piece.raw.substr(0, at);
+      pieces.insert(pieces.begin() + static_cast<ptrdiff_t>(k) + 1, after);
+      std::erase_if(pieces, [](const TextPiece& p) { return p.raw.empty(); });
+      return true;
+    }
+    return false;
+  }
+
+  // The unescaped text of the pieces, a line end between elements (no positions).
+  static std::string joined_text(const std::vector<TextPiece>& pieces) {
+    std::string out;
+    int group = pieces.empty() ? 0 : pieces.front().group;
+    for (const TextPiece& piece : pieces) {
+      if (piece.group != group) out += '\n';
+      group = piece.group;
+      out += piece.escaped ? unescape_xml(piece.raw) : std::string(piece.raw);
+    }
+    return out;
   }
 
   static bool has_code(const std::vector<TextPiece>& pieces) {
@@ -829,6 +1182,7 @@ class PlcOpenReader {
   void issue(uint32_t offset, std::string message) { issues_.push_back({offset, std::move(message)}); }
 
   std::string_view text_;
+  std::unordered_map<std::string, pugi::xml_node> data_types_;
   VirtualTextBuilder builder_;
   std::string owner_;
   std::string role_;
@@ -845,14 +1199,13 @@ ContainerDocument read_plcopen(std::string_view text) {
 
 bool looks_like_plcopen(std::string_view text) {
   const std::string_view head = text.substr(0, 8192);
-  // The root element: the first tag that is not a declaration, comment or doctype.
+  // The root element: the first tag that is not a declaration, comment or doctype
+  // (a comment may hold tags: "<!-- see the <addData> block -->").
   size_t at = 0;
   while ((at = head.find('<', at)) != std::string_view::npos) {
-    if (at + 1 < head.size() && (head[at + 1] == '?' || head[at + 1] == '!')) {
-      ++at;
-      continue;
-    }
-    break;
+    const size_t skipped = skip_special_markup(head, at);
+    if (skipped == std::string_view::npos) break;
+    at = skipped;
   }
   if (at == std::string_view::npos) return false;
   size_t end = at + 1;

@@ -66,6 +66,22 @@ TEST(Cli, ExplainPrintsTheDocsPageOfACode) {
   EXPECT_NE(unknown.err.find("S999"), std::string::npos);
 }
 
+TEST(Cli, InitWritesACommentedRungTomlOnce) {
+  auto dir = std::filesystem::temp_directory_path() / ("rung_init_test_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  RunResult first = run_rung("init '" + dir.string() + "'");
+  EXPECT_EQ(first.exit_code, 0) << first.err;
+  std::string text = test::read_file(dir / "rung.toml");
+  EXPECT_NE(text.find("profile = \"codesys\""), std::string::npos);
+  EXPECT_NE(text.find("name = \"" + dir.filename().string() + "\""), std::string::npos);
+  RunResult again = run_rung("init '" + dir.string() + "'");
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("already exists"), std::string::npos);
+  EXPECT_EQ(run_rung("init --force '" + dir.string() + "'").exit_code, 0);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(run_rung("frobnicate").exit_code, 2);
   EXPECT_EQ(run_rung("parse --format xml examples").exit_code, 2);

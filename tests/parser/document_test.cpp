@@ -149,3 +149,19 @@ TEST(Document, PlainFileWithFlatCommentsIsReadLikeMatiec) {
 
 }  // namespace
 }  // namespace rung
+
+namespace rung {
+namespace {
+
+TEST(Document, UnknownXmlIsReportedOnceNotParsedAsSt) {
+  Document doc = Document::from_bytes(
+      "pom.xml",
+      "<?xml version=\"1.0\"?>\n<!-- build -->\n<project xmlns=\"http://maven.apache.org/POM/4.0.0\">\n</project>\n");
+  EXPECT_EQ(doc.tree(), nullptr);
+  ASSERT_EQ(doc.diagnostics().size(), 1u);
+  EXPECT_EQ(doc.diagnostics()[0].code, "S010");
+  EXPECT_NE(doc.diagnostics()[0].message.find("<project>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rung
