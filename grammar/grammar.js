@@ -369,7 +369,8 @@ module.exports = grammar({
     generic_type: $ => seq(
       field('type', $.type_name),
       token.immediate('<'),
-      commaSep1(field('argument', choice($.integer_literal, $.identifier, $.parenthesized_expression))),
+      commaSep1(field('argument', choice($.integer_literal, $.identifier, alias($._dotted_name, $.qualified_name),
+        $.parenthesized_expression))),
       '>',
     ),
 
@@ -415,6 +416,8 @@ module.exports = grammar({
         field('name', $.identifier),
         repeat($.modifier),
         optional(seq(':', field('type', $._type_spec), repeat($.modifier))),
+        // Old TwinCAT libraries end the header with ';' ("PROPERTY P : STRING;").
+        optional(';'),
         repeat($.var_block),
         repeat($.property_accessor),
         optional(kw('END_PROPERTY')),
