@@ -500,7 +500,7 @@ class PlcOpenReader {
   }
 
   // A string's initial value. Beremiz writes it without quotes (value="test");
-  // rung adds them (synthetic) and escapes ' " $ with a synthetic '$', keeping
+  // rung adds them (synthetic) and escapes the quote and '$' with a synthetic '$', keeping
   // each character of the value mapped to the attribute. A value that is already
   // a quoted literal stands as it is.
   void string_value(pugi::xml_node simple, char quote) {
@@ -515,7 +515,7 @@ class PlcOpenReader {
     if (!located) {
       std::string escaped;
       for (const char c : unescaped) {
-        if (c == '\'' || c == '"' || c == '$') escaped += '$';
+        if (c == quote || c == '$') escaped += '$';
         escaped += c;
       }
       syn(escaped);
@@ -537,7 +537,7 @@ class PlcOpenReader {
             }
           }
         }
-        if (c == '\'' || c == '"' || c == '$') {
+        if (c == quote || c == '$') {
           if (i > run)
             append_escaped_text(builder_, raw.substr(run, i - run), offset + static_cast<uint32_t>(run), role_, owner_);
           syn("$");
