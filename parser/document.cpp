@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "parser/conditional_branches.hpp"
 #include "parser/containers/read_container.hpp"
 #include "parser/diagnostic_codes.hpp"
 #include "parser/source/flat_comments.hpp"
@@ -151,6 +152,23 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
         if (errors_in(flat_syntax) < errors_in(syntax)) {
           tree_.emplace(std::move(reparsed));
           syntax = std::move(flat_syntax);
+        }
+      }
+    }
+  }
+
+  // Conditional-compilation branches may split a statement ({IF defined(X)} IF a THEN {ELSE}
+  // IF b THEN {END_IF}); when the file does not parse as written, read only the first branch of
+  // each group, and keep that reading if it has fewer errors.
+  if (errors_in(syntax) > 0) {
+    std::string first_branches = tree_->text();
+    if (keep_first_conditional_branches(*tree_, first_branches) > 0) {
+      SyntaxTree reparsed = SyntaxTree::parse(std::move(first_branches), options.parse);
+      if (!reparsed.aborted()) {
+        std::vector<Diagnostic> branch_syntax = collect_syntax_diagnostics(reparsed, syntax_options);
+        if (errors_in(branch_syntax) < errors_in(syntax)) {
+          tree_.emplace(std::move(reparsed));
+          syntax = std::move(branch_syntax);
         }
       }
     }

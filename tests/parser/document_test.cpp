@@ -165,3 +165,30 @@ TEST(Document, UnknownXmlIsReportedOnceNotParsedAsSt) {
 
 }  // namespace
 }  // namespace rung
+
+namespace rung {
+namespace {
+
+TEST(Document, ConditionalBranchesThatSplitAStatementParse) {
+  std::string text =
+      "PROGRAM P\nVAR a, b : BOOL; x : INT; END_VAR\n"
+      "{IF defined (DEBUG)}\nIF a THEN\n{ELSE}\nIF b THEN\n{END_IF}\n    x := 1;\nEND_IF\nEND_PROGRAM\n";
+  Document doc = Document::from_bytes("p.st", text);
+  ASSERT_NE(doc.tree(), nullptr);
+  EXPECT_TRUE(doc.diagnostics().empty()) << doc.diagnostics()[0].message;
+  // Only the parser's copy changed: the file text still has both branches.
+  EXPECT_NE(doc.file_text().find("IF b THEN"), std::string_view::npos);
+  EXPECT_EQ(doc.tree()->text().find("IF b THEN"), std::string::npos);
+}
+
+TEST(Document, ConditionalBranchesAreLeftAloneWhenTheFileParses) {
+  std::string text =
+      "PROGRAM P\nVAR x : INT; END_VAR\n{IF defined (A)}\nx := 1;\n{ELSIF defined (B)}\nx := 2;\n{ELSE}\nx := 3;\n"
+      "{END_IF}\nEND_PROGRAM\n";
+  Document doc = Document::from_bytes("p.st", text);
+  EXPECT_TRUE(doc.diagnostics().empty());
+  EXPECT_EQ(doc.tree()->text(), text);
+}
+
+}  // namespace
+}  // namespace rung

@@ -18,7 +18,8 @@ using testing::decoded_data;
 using testing::file_position_of;
 using testing::LineColumn;
 
-constexpr const char* kDataFiles[] = {"Small_plcopen.xml", "Beremiz_plc.xml", "Codesys_export.xml"};
+constexpr const char* kDataFiles[] = {"Small_plcopen.xml", "Beremiz_plc.xml", "Codesys_export.xml",
+                                      "Beremiz_quirks.xml", "Codesys_application.xml"};
 
 const ContainerObject* find_object(const ContainerDocument& doc, std::string_view name) {
   const auto it =
@@ -211,23 +212,24 @@ TEST(PlcOpenReader, CodesysExportLayout) {
   const std::string file = decoded_data("Codesys_export.xml");
   const ContainerDocument doc = read_plcopen(file);
   EXPECT_TRUE(doc.issues.empty());
-  for (const std::string_view expected : {
-           "TYPE E_State : (Idle, Running, Fault); END_TYPE\n",
-           "FUNCTION_BLOCK FB_Conveyor EXTENDS FB_Base IMPLEMENTS I_Runnable\n",
-           "VAR PERSISTENT\n  nRuns : UDINT;\nEND_VAR\n",
-           "  pSelf : POINTER TO FB_Conveyor;\n  rtStart : Standard.R_TRIG;\n",
-           "END_IF\nMETHOD PRIVATE M_Reset : BOOL\nVAR_INPUT\n  xHard : BOOL;\nEND_VAR\n",
-           "M_Reset := TRUE;\nEND_METHOD\nPROPERTY P_Runs : UDINT\nGET\nVAR\n  nCopy : UDINT;\nEND_VAR\n"  // NOLINT(bugprone-suspicious-missing-comma)
-           "nCopy := nRuns;\nP_Runs := nCopy;\nEND_GET\nSET\nnRuns := P_Runs;\nEND_SET\nEND_PROPERTY\n"
-           "ACTION A_Stop:\neState := E_State.Idle;\nEND_ACTION\nEND_FUNCTION_BLOCK\n",
-           "  aSpeeds : ARRAY [1..3] OF INT := [10, 2(20)];\n",
-           "PROGRAM P_Diagram\nVAR\n  xLamp : BOOL;\nEND_VAR\nEND_PROGRAM\n",
-           // A POU stored in the application's addData (export with device).
-           "FUNCTION F_Limit : INT\nVAR_INPUT\n  nIn : INT;\nEND_VAR\nF_Limit := LIMIT(0, nIn, 100);\nEND_FUNCTION\n",
-           // xsd:duration interval; typeName="" means the program's own name.
-           "RESOURCE Application ON PLC\nVAR_GLOBAL\n  xRun : BOOL;\nEND_VAR\n"
-           "  TASK MainTask(INTERVAL := T#0.02s, PRIORITY := 1);\n  PROGRAM PLC_PRG WITH MainTask : PLC_PRG;\n",
-       }) {
+  for (
+      const std::string_view expected : {
+          "TYPE E_State : (Idle, Running, Fault); END_TYPE\n",
+          "FUNCTION_BLOCK FB_Conveyor EXTENDS FB_Base IMPLEMENTS I_Runnable\n",
+          "VAR PERSISTENT\n  nRuns : UDINT;\nEND_VAR\n",
+          "  pSelf : POINTER TO FB_Conveyor;\n  rtStart : Standard.R_TRIG;\n",
+          "END_IF\nMETHOD PRIVATE M_Reset : BOOL\nVAR_INPUT\n  xHard : BOOL;\nEND_VAR\n",
+          "M_Reset := TRUE;\nEND_METHOD\nPROPERTY P_Runs : UDINT\nGET\nVAR\n  nCopy : UDINT;\nEND_VAR\n"  // NOLINT(bugprone-suspicious-missing-comma)
+          "nCopy := nRuns;\nP_Runs := nCopy;\nEND_GET\nSET\nnRuns := P_Runs;\nEND_SET\nEND_PROPERTY\n"
+          "ACTION A_Stop:\neState := E_State.Idle;\nEND_ACTION\nEND_FUNCTION_BLOCK\n",
+          "  aSpeeds : ARRAY [1..3] OF INT := [10, 2(20)];\n",
+          "PROGRAM P_Diagram\nVAR\n  xLamp : BOOL;\nEND_VAR\nEND_PROGRAM\n",
+          // A POU stored in the application's addData (export with device).
+          "FUNCTION F_Limit : INT\nVAR_INPUT\n  nIn : INT;\nEND_VAR\nF_Limit := LIMIT(0, nIn, 100);\nEND_FUNCTION\n",
+          // xsd:duration interval; typeName="" means the program's own name.
+          "RESOURCE Application ON PLC\nVAR_GLOBAL\n  xRun : BOOL;\nEND_VAR\n"
+          "  TASK MainTask(INTERVAL := T#0.02s, PRIORITY := 1);\n  PROGRAM PLC_PRG WITH MainTask : PLC_PRG;\n",
+      }) {
     EXPECT_NE(doc.virtual_text.find(expected), std::string::npos) << "missing:\n" << expected;
   }
   EXPECT_EQ(find_object(doc, "FB_Conveyor.M_Reset")->kind, "METHOD");
@@ -351,6 +353,178 @@ TEST(PlcOpenReader, DetectedByContentWhateverTheExtension) {
   EXPECT_EQ(detect_container("x.xml", "<beans>http://www.plcopen.org/xml/tc6_0201</beans>"), ContainerKind::None);
   EXPECT_EQ(read_container("plc.xml", file).kind, ContainerKind::PlcOpen);
   EXPECT_EQ(container_kind_name(ContainerKind::PlcOpen), "plcopen");
+}
+
+TEST(PlcOpenReader, UnquotedStringValuesAreQuoted) {
+  const std::string file = decoded_data("Beremiz_quirks.xml");
+  const ContainerDocument doc = read_plcopen(file);
+  EXPECT_TRUE(doc.issues.empty());
+  for (const std::string_view expected : {
+           "  sPlain : STRING := 'test';\n",
+           "  sSpaces : STRING := 'hello world';\n",
+           "  sQuoted : STRING(10) := 'done';\n",  // already quoted: as it stands
+           "  sEscape : STRING := 'it$'s 5$$ \"x\"';\n",
+           "  sDerived : T_Alias := '2';\n",  // T_Alias -> T_Msg -> STRING(40)
+           "  wLabel : WSTRING := \"x y\";\n",
+           "  aNames : ARRAY [1..2] OF STRING := ['a', 'b c'];\n",
+           "  stDev : ST_Device := (sName := 'pump 1', nId := 7);\n",
+           "  nCount : INT := 3;\n",
+       }) {
+    EXPECT_NE(doc.virtual_text.find(expected), std::string::npos) << "missing:\n" << expected;
+  }
+  // The quotes are synthetic; the value's characters map to the attribute.
+  const size_t quote = doc.virtual_text.find("'hello world'");
+  ASSERT_NE(quote, std::string::npos);
+  const Segment* synthetic = doc.segment_at(static_cast<uint32_t>(quote));
+  ASSERT_NE(synthetic, nullptr);
+  EXPECT_FALSE(synthetic->file_begin.has_value());
+  EXPECT_EQ(file_position_of(doc, file, "hello world"), (LineColumn{59, 37}));
+  // An inserted '$' is synthetic; the escaped character maps onto its entity.
+  const size_t escape = doc.virtual_text.find("$'s");
+  ASSERT_NE(escape, std::string::npos);
+  EXPECT_FALSE(doc.segment_at(static_cast<uint32_t>(escape))->file_begin.has_value());
+  EXPECT_EQ(std::string_view(file).substr(*doc.to_file_offset(static_cast<uint32_t>(escape + 1)), 6), "&apos;");
+  EXPECT_EQ(file_position_of(doc, file, "s 5"), (LineColumn{75, 45}));
+}
+
+TEST(PlcOpenReader, ForeignCodeInAnStBodyIsSkipped) {
+  const std::string file = decoded_data("Beremiz_quirks.xml");
+  const ContainerDocument doc = read_plcopen(file);
+  EXPECT_NE(doc.virtual_text.find("FUNCTION_BLOCK ReadInputs\nVAR_OUTPUT\n  xStart : BOOL;\nEND_VAR\n"
+                                  "END_FUNCTION_BLOCK\n"),
+            std::string::npos);
+  EXPECT_NE(doc.virtual_text.find("FUNCTION_BLOCK PyBlock\nVAR_INPUT\n  nIn : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n"),
+            std::string::npos);
+  EXPECT_EQ(doc.virtual_text.find("#include"), std::string::npos);
+  EXPECT_EQ(doc.virtual_text.find("import math"), std::string::npos);
+  EXPECT_EQ(find_object(doc, "ReadInputs")->note, "ST body holds C/C++ code, not ST; not read as text");
+  EXPECT_EQ(find_object(doc, "PyBlock")->note, "ST body holds Python code, not ST; not read as text");
+  EXPECT_EQ(find_object(doc, "Strings")->note, "");
+}
+
+TEST(PlcOpenReader, BeremizAssignTransitionsLoseTheirAssign) {
+  const std::string file = decoded_data("Beremiz_quirks.xml");
+  const ContainerDocument doc = read_plcopen(file);
+  EXPECT_NE(doc.virtual_text.find("ACTION Act:\nA := B;\nEND_ACTION\n"
+                                  "TRANSITION Go:\n A AND B;\nEND_TRANSITION\n"
+                                  "TRANSITION Back:\n(* leave *)\n   NOT A;\nEND_TRANSITION\n"
+                                  "TRANSITION Plain:\nA OR B\nEND_TRANSITION\nEND_FUNCTION_BLOCK\n"),
+            std::string::npos)
+      << doc.virtual_text;
+  EXPECT_EQ(file_position_of(doc, file, " A AND B;"), (LineColumn{222, 37}));
+  EXPECT_EQ(file_position_of(doc, file, "(* leave *)"), (LineColumn{229, 35}));
+  EXPECT_EQ(file_position_of(doc, file, " NOT A;"), (LineColumn{230, 5}));
+  // The ':=' itself is file text the grammar does not see.
+  EXPECT_EQ(doc.to_virtual_offset(static_cast<uint32_t>(file.find(":= A AND B"))), std::nullopt);
+}
+
+TEST(PlcOpenReader, CodesysApplicationInTheProjectAddData) {
+  const std::string file = decoded_data("Codesys_application.xml");
+  const ContainerDocument doc = read_plcopen(file);
+  EXPECT_TRUE(doc.issues.empty());
+  for (const std::string_view expected : {
+           "CONFIGURATION Plant\nRESOURCE Plant ON PLC\n"
+           "VAR_GLOBAL\n  nQos : INT := 1;\nEND_VAR\nVAR_GLOBAL\nEND_VAR\n"
+           "  TASK MainTask(INTERVAL := T#0.05s, PRIORITY := 4);\n  TASK Background(PRIORITY := 15);\n"
+           "  PROGRAM PLC_PRG WITH MainTask : PLC_PRG;\n  PROGRAM PLC_BG WITH Background : PLC_BG;\n"
+           "END_RESOURCE\nEND_CONFIGURATION\n",
+           "PROGRAM PLC_PRG\nVAR\n  dev : I_Device;\nEND_VAR\nIF dev <> 0 THEN\n\tdev.Poll();\nEND_IF\nEND_PROGRAM\n",
+       }) {
+    EXPECT_NE(doc.virtual_text.find(expected), std::string::npos) << "missing:\n" << expected;
+  }
+  // The resource's name maps to its attribute; the configuration's copy is synthetic.
+  EXPECT_EQ(file_position_of(doc, file, "Plant", doc.virtual_text.find("RESOURCE")), (LineColumn{80, 23}));
+  EXPECT_FALSE(doc.segment_at(static_cast<uint32_t>(doc.virtual_text.find("Plant\n")))->file_begin.has_value());
+  EXPECT_EQ(find_object(doc, "Plant")->kind, "CONFIGURATION");
+
+  // A broken initial value in a GVL of the application is now seen by the grammar.
+  std::string broken = file;
+  broken.replace(broken.find("value=\"1\""), 9, "value=\"1 +\"");
+  const Document document = Document::from_bytes("Plant.xml", broken);
+  ASSERT_FALSE(document.diagnostics().empty());
+  const FilePosition p = document.position_of_file_offset(document.diagnostics().front().range.begin);
+  EXPECT_EQ(p.line, 104u);
+}
+
+TEST(PlcOpenReader, CodesysInterfaces) {
+  const std::string file = decoded_data("Codesys_application.xml");
+  const ContainerDocument doc = read_plcopen(file);
+  EXPECT_NE(doc.virtual_text.find("INTERFACE I_Device\nMETHOD Poll : BOOL\nEND_METHOD\n"
+                                  "METHOD Process\nVAR_INPUT\n  pData : POINTER TO ARRAY [0..124] OF WORD;\nEND_VAR\n"
+                                  "END_METHOD\nPROPERTY Id : INT\nGET\nEND_GET\nEND_PROPERTY\nEND_INTERFACE\n"
+                                  "INTERFACE I_Bus EXTENDS I_Device\nEND_INTERFACE\n"),
+            std::string::npos)
+      << doc.virtual_text;
+  EXPECT_EQ(file_position_of(doc, file, "I_Device"), (LineColumn{22, 24}));
+  EXPECT_EQ(file_position_of(doc, file, "Poll"), (LineColumn{24, 25}));
+  EXPECT_EQ(file_position_of(doc, file, "I_Device", doc.virtual_text.find("EXTENDS")), (LineColumn{73, 24}));
+  EXPECT_EQ(find_object(doc, "I_Device")->kind, "INTERFACE");
+  EXPECT_EQ(find_object(doc, "I_Device.Poll")->kind, "METHOD");
+  EXPECT_EQ(find_object(doc, "I_Device.Id")->kind, "PROPERTY");
+  const size_t end = doc.virtual_text.find("END_INTERFACE");
+  EXPECT_EQ(doc.segment_at(static_cast<uint32_t>(end))->object_name, "I_Device");
+}
+
+TEST(PlcOpenReader, LessThanInAnAttributeValueIsReported) {
+  const std::string file =
+      "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+      "<!-- a <comment> with \"<quotes>\" -->\n"
+      "<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
+      "  <fileHeader companyName=\"\" productName=\"CODESYS\" creationDateTime=\"<NORMALIZED>\" />\n"
+      "  <types><dataTypes /><pous><pou name=\"P\" pouType=\"program\">\n"
+      "    <body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">x := a &lt; b;</xhtml></ST></body>\n"
+      "  </pou></pous></types>\n"
+      "</project>\n";
+  const ContainerDocument doc = read_plcopen(file);
+  ASSERT_EQ(doc.issues.size(), 1u);
+  EXPECT_EQ(doc.issues.front().message, "malformed XML at line 4: '<' inside an attribute value");
+  EXPECT_EQ(doc.issues.front().offset, file.find("<NORMALIZED>"));
+  // The rest is still read.
+  EXPECT_NE(doc.virtual_text.find("PROGRAM P\nx := a < b;\nEND_PROGRAM\n"), std::string::npos) << doc.virtual_text;
+
+  // '<' in CDATA, comments, text and single-quoted attributes with '>' are fine.
+  for (const std::string_view fine : {
+           std::string_view("<project a='x>y' b=\"1\"><![CDATA[<a b=\"<\">]]><!-- <x y=\"<\"> --></project>"),
+           std::string_view("<?xml version=\"1.0\"?><!DOCTYPE project [<!ENTITY e \"<\">]><project/>"),
+       }) {
+    EXPECT_TRUE(read_plcopen(fine).issues.empty()) << fine;
+  }
+}
+
+TEST(PlcOpenReader, VariableNamesThatAreNotIdentifiersAreReported) {
+  const std::string file =
+      "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+      "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n"
+      "  <types><dataTypes/><pous><pou name=\"P\" pouType=\"program\">\n"
+      "    <interface><localVars>\n"
+      "      <variable name=\"Input/OutputVariable\"><type><DINT/></type></variable>\n"
+      "      <variable name=\"nOk\"><type><DINT/></type></variable>\n"
+      "    </localVars></interface>\n"
+      "    <body><FBD/></body>\n"
+      "  </pou></pous></types>\n"
+      "</project>\n";
+  const ContainerDocument doc = read_plcopen(file);
+  ASSERT_EQ(doc.issues.size(), 1u);
+  EXPECT_EQ(doc.issues.front().message,
+            "variable name 'Input/OutputVariable' is not an IEC identifier; the variable is left out");
+  EXPECT_EQ(doc.issues.front().offset, file.find("Input/"));
+  EXPECT_EQ(doc.virtual_text, "PROGRAM P\nVAR\n  nOk : DINT;\nEND_VAR\nEND_PROGRAM\n");
+  const Document document = Document::from_bytes("plc.xml", file);
+  ASSERT_EQ(document.diagnostics().size(), 1u);
+  EXPECT_EQ(document.diagnostics().front().code, codes::kContainer);
+}
+
+TEST(PlcOpenReader, CommentsBeforeTheRootAreSkippedWhole) {
+  EXPECT_TRUE(
+      looks_like_plcopen("<?xml version=\"1.0\"?>\n<!-- Methods live in the <addData> block. -->\n"
+                         "<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\"/>"));
+  EXPECT_TRUE(
+      looks_like_plcopen("<!DOCTYPE project [<!ENTITY e \"<x>\">]>\n<!--a--><!--<b>-->"
+                         "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\"/>"));
+  EXPECT_FALSE(looks_like_plcopen("<!-- <project xmlns=\"http://www.plcopen.org/xml/tc6_0201\"> -->\n<other/>"));
+  EXPECT_FALSE(looks_like_plcopen("<!-- never closed <project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">"));
+  EXPECT_EQ(detect_container("FB_TEMPLATE.xml", decoded_data("Codesys_application.xml")), ContainerKind::PlcOpen);
+  EXPECT_EQ(detect_container("plc.xml", decoded_data("Beremiz_quirks.xml")), ContainerKind::PlcOpen);
 }
 
 }  // namespace
