@@ -13,7 +13,9 @@
 //     ACTION <name>: <body> END_ACTION                   (actions with a textual body)
 //     TRANSITION <name>: <body> END_TRANSITION           (transitions with a textual body)
 //   END_PROGRAM|END_FUNCTION|END_FUNCTION_BLOCK
+//   INTERFACE <name> METHOD ... END_METHOD ... END_INTERFACE  (CODESYS addData interfaces)
 //   CONFIGURATION ... RESOURCE ... TASK ... PROGRAM ... END_CONFIGURATION
+//     (also for a CODESYS application resource in the project's addData)
 //
 // CODESYS exports that include the device put POUs and data types into
 // resource/addData/data[@name=".../pou" | ".../datatype"]; they are read as if
@@ -26,6 +28,12 @@
 // instance names): these are real segments on the attribute's value, so a
 // diagnostic on a declaration lands on its <variable name="..."> and a later
 // rename edits the attribute. Bodies (CDATA or escaped text) are real text.
+//
+// Repairs of real files: unquoted string initial values (Beremiz) get synthetic
+// quotes; a Beremiz ST transition ":= expr;" loses its ':='; <ST> bodies that
+// hold C/C++ or Python (OpenPLC Editor v4) are skipped with a note. Reported as
+// issues: a raw '<' in an attribute value, a variable name that is not an
+// identifier (the variable is left out).
 #pragma once
 
 #include <string_view>
@@ -39,8 +47,8 @@ namespace rung::containers {
 // read before the damage.
 ContainerDocument read_plcopen(std::string_view text);
 
-// Whether `text` looks like a PLCopen XML project: its root element is
-// <project> and the PLCopen TC6 namespace (tc6_0200 or tc6_0201) is declared
+// Whether `text` looks like a PLCopen XML project: its root element (after the
+// XML declaration, comments and doctype) is <project> and the PLCopen TC6 namespace (tc6_0200 or tc6_0201) is declared
 // in the first few KB.
 bool looks_like_plcopen(std::string_view text);
 
