@@ -734,10 +734,11 @@ module.exports = grammar({
       ';',
     ),
 
-    // CODESYS multiple assignment: a := b := 0;
+    // CODESYS multiple assignment: a := b := 0; and ExST a S= b R= F(x); (every target takes
+    // the value at the end of the line).
     assignment_expression: $ => prec.right(seq(
       field('left', $._reference),
-      field('operator', ':='),
+      field('operator', choice(':=', kwAs('S=', 'S='), kwAs('R=', 'R='))),
       field('right', choice($._expression, $.assignment_expression)),
     )),
 

@@ -210,12 +210,28 @@ bool looks_binary(std::string_view sample) {
   return control * 10 > sample.size();  // more than 10 %
 }
 
+// Some export tools pad files with NUL bytes up to a block size. A run of NULs at the very end of
+// otherwise 8-bit text is that padding, not binary content: it is dropped, with a warning.
+size_t trailing_nul_padding(std::string_view bytes) {
+  size_t n = 0;
+  while (n < bytes.size() && bytes[bytes.size() - 1 - n] == '\0') ++n;
+  if (n == 0 || n == bytes.size()) return 0;
+  return bytes.substr(0, bytes.size() - n).find('\0') == std::string_view::npos ? n : 0;
+}
+
+void note_padding(DecodedText& result, size_t padding) {
+  if (padding == 0) return;
+  result.issues.push_back({static_cast<uint32_t>(result.utf8.size()),
+                           fmt::format("{} NUL bytes at the end of the file were ignored", padding)});
+}
+
 DecodedText decode(std::string_view bytes) {
   DecodedText result;
 
   if (starts_with(bytes, "\xEF\xBB\xBF")) {
     result.had_bom = true;
-    const std::string_view payload = bytes.substr(3);
+    const size_t padding = trailing_nul_padding(bytes.substr(3));
+    const std::string_view payload = bytes.substr(3, bytes.size() - 3 - padding);
     if (looks_binary(payload.substr(0, sample_size))) {
       result.is_binary = true;
       return result;
@@ -223,6 +239,7 @@ DecodedText decode(std::string_view bytes) {
     IssueSink sink(result.issues);
     decode_utf8_lossy(payload, result.utf8, sink);
     sink.flush();
+    note_padding(result, padding);
     return result;
   }
   if (starts_with(bytes, "\xFF\xFE") || starts_with(bytes, "\xFE\xFF")) {
@@ -232,6 +249,9 @@ DecodedText decode(std::string_view bytes) {
     finish_utf16(result, bytes.substr(2), big_endian);
     return result;
   }
+  // (UTF-16 text has NULs throughout, so it never counts as padded.)
+  const size_t padding = trailing_nul_padding(bytes);
+  bytes.remove_suffix(padding);
   if (const auto utf16 = sniff_utf16(bytes)) {
     result.encoding = *utf16;
     finish_utf16(result, bytes, *utf16 == Encoding::Utf16Be);
@@ -245,6 +265,7 @@ DecodedText decode(std::string_view bytes) {
   const Utf8Survey survey = survey_utf8(bytes);
   if (survey.invalid == 0) {
     result.utf8.assign(bytes);
+    note_padding(result, padding);
     return result;
   }
   IssueSink sink(result.issues);
@@ -257,6 +278,7 @@ DecodedText decode(std::string_view bytes) {
     decode_cp1252(bytes, result.utf8, sink);
   }
   sink.flush();
+  note_padding(result, padding);
   return result;
 }
 

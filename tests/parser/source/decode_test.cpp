@@ -250,3 +250,23 @@ TEST(Decode, EncodingNames) {
 
 }  // namespace
 }  // namespace rung::source
+
+namespace rung::source {
+namespace {
+
+TEST(Decode, TrailingNulPaddingIsDroppedWithAWarning) {
+  std::string bytes = "PROGRAM P\nEND_PROGRAM\n";
+  bytes.append(6, '\0');
+  DecodedText d = decode(bytes);
+  EXPECT_FALSE(d.is_binary);
+  EXPECT_EQ(d.utf8, "PROGRAM P\nEND_PROGRAM\n");
+  ASSERT_EQ(d.issues.size(), 1u);
+  EXPECT_NE(d.issues[0].message.find("6 NUL bytes"), std::string::npos);
+  // NULs inside the text still make it binary.
+  std::string inner("PROG\0RAM P\n", 11);
+  inner.append(4, '\0');
+  EXPECT_TRUE(decode(std::string_view(inner.data(), inner.size())).is_binary);
+}
+
+}  // namespace
+}  // namespace rung::source
