@@ -92,7 +92,10 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
     return;
   }
   for (const auto& issue : decoded_->issues) {
-    diagnostics_.push_back(make(codes::kEncoding, Severity::Warning, {issue.offset, issue.offset + 1}, issue.message,
+    // An issue may sit at the very end of the text (dropped NUL padding): keep the range inside it.
+    const auto size = static_cast<uint32_t>(decoded_->utf8.size());
+    const uint32_t begin = std::min(issue.offset, size);
+    diagnostics_.push_back(make(codes::kEncoding, Severity::Warning, {begin, std::min(begin + 1, size)}, issue.message,
                                 "save the file as UTF-8"));
   }
 

@@ -103,3 +103,22 @@ TEST(BadInput, LargeFileParsesCompletely) {
 
 }  // namespace
 }  // namespace rung
+
+namespace rung {
+namespace {
+
+// Found by scripts/fuzz (parser_fuzzer): invalid UTF-8 followed by NUL padding gave a diagnostic
+// whose range ended one byte past the text.
+TEST(BadInput, FuzzCrashEncodingIssueAtTheEndOfTheText) {
+  std::string bytes = "\xFF\xFF<?xml \xFF\xFFrml i*n\" \nncodi*n";
+  bytes.append(64, '\0');
+  Document doc = Document::from_bytes("fuzz.st", bytes);
+  ASSERT_FALSE(doc.diagnostics().empty());
+  for (const auto& d : doc.diagnostics()) {
+    EXPECT_LE(d.range.begin, d.range.end);
+    EXPECT_LE(d.range.end, doc.file_text().size()) << d.code << " " << d.message;
+  }
+}
+
+}  // namespace
+}  // namespace rung
