@@ -36,24 +36,32 @@ SyntaxNode first_leaf(SyntaxNode node) {
 }
 
 // The last non-empty leaf that starts before `offset` (the token a missing one should follow).
+// Comments and pragmas are skipped: a ';' never belongs after a comment.
 SyntaxNode last_leaf_before(SyntaxNode root, uint32_t offset) {
-  if (offset == 0) return {};
-  SyntaxNode node = root.descendant_for_range(offset - 1, offset);
-  // Climb until the node starts before offset and has a non-empty leaf there.
-  while (node && node.begin() >= offset) node = node.parent();
-  while (node && node.child_count() > 0) {
-    SyntaxNode pick;
-    for (uint32_t i = node.child_count(); i-- > 0;) {
-      SyntaxNode c = node.child(i);
-      if (c.begin() < offset && c.end() > c.begin()) {
-        pick = c;
-        break;
+  while (offset > 0) {
+    SyntaxNode node = root.descendant_for_range(offset - 1, offset);
+    // Climb until the node starts before offset and has a non-empty leaf there.
+    while (node && node.begin() >= offset) node = node.parent();
+    while (node && node.child_count() > 0 && !node.is_extra()) {
+      SyntaxNode pick;
+      for (uint32_t i = node.child_count(); i-- > 0;) {
+        SyntaxNode c = node.child(i);
+        if (c.begin() < offset && c.end() > c.begin()) {
+          pick = c;
+          break;
+        }
       }
+      if (!pick) break;
+      node = pick;
     }
-    if (!pick) break;
-    node = pick;
+    if (!node || node.begin() >= offset) return {};
+    if (node.is_extra()) {
+      offset = node.begin();  // look before the comment or pragma
+      continue;
+    }
+    if (node.child_count() == 0 && node.end() > node.begin()) return node;
+    return {};
   }
-  if (node && node.child_count() == 0 && node.end() > node.begin() && node.begin() < offset) return node;
   return {};
 }
 
@@ -508,11 +516,12 @@ class Collector {
 
   static const BlockRule* block_rule(std::string_view keyword) {
     static constexpr BlockRule kRules[] = {
-        {"IF", "END_IF", "THEN"},      {"CASE", "END_CASE", "OF"},      {"FOR", "END_FOR", "DO"},
-        {"WHILE", "END_WHILE", "DO"},  {"REPEAT", "END_REPEAT", ""},    {"STRUCT", "END_STRUCT", ""},
-        {"VAR", "END_VAR", ""},        {"VAR_INPUT", "END_VAR", ""},    {"VAR_OUTPUT", "END_VAR", ""},
-        {"VAR_IN_OUT", "END_VAR", ""}, {"VAR_GLOBAL", "END_VAR", ""},   {"VAR_TEMP", "END_VAR", ""},
-        {"VAR_STAT", "END_VAR", ""},   {"VAR_EXTERNAL", "END_VAR", ""}, {"VAR_INST", "END_VAR", ""},
+        {"IF", "END_IF", "THEN"},        {"CASE", "END_CASE", "OF"},    {"FOR", "END_FOR", "DO"},
+        {"WHILE", "END_WHILE", "DO"},    {"REPEAT", "END_REPEAT", ""},  {"STRUCT", "END_STRUCT", ""},
+        {"VAR", "END_VAR", ""},          {"TYPE", "END_TYPE", ""},      {"UNION", "END_UNION", ""},
+        {"VAR_INPUT", "END_VAR", ""},    {"VAR_OUTPUT", "END_VAR", ""}, {"VAR_IN_OUT", "END_VAR", ""},
+        {"VAR_GLOBAL", "END_VAR", ""},   {"VAR_TEMP", "END_VAR", ""},   {"VAR_STAT", "END_VAR", ""},
+        {"VAR_EXTERNAL", "END_VAR", ""}, {"VAR_INST", "END_VAR", ""},
     };
     for (const auto& r : kRules)
       if (r.opener == keyword) return &r;
