@@ -158,6 +158,12 @@ struct OutlineBuilder {
       PouKind ck;
       if (pou_kind_of(c.kind(), &ck) && is_member_kind(ck)) pou.members_.push_back(build(c, ck));
     }
+    // IEC textual SFC keeps its ACTION blocks inside the network of the body.
+    SyntaxNode body = node.child_by_field("body");
+    if (body && body.kind() == "sfc_network") {
+      for (SyntaxNode block : body.children_of_kind("sfc_action_block"))
+        pou.members_.emplace_back(block, PouKind::Action);
+    }
     return pou;
   }
 

@@ -127,6 +127,18 @@ TEST(Ast, ObjectShapeMembersAttachToThePouTheyFollow) {
   EXPECT_TRUE(o.pous[1].members().empty());
 }
 
+TEST(Ast, SfcActionBlocksAreMembersOfTheirPou) {
+  SyntaxTree tree = SyntaxTree::parse(
+      "PROGRAM Seq\nVAR a : BOOL; END_VAR\nINITIAL_STEP S0:\n  Act(N);\nEND_STEP\nACTION Act:\n  a := TRUE;\n"
+      "END_ACTION\nTRANSITION FROM S0 TO S1\n  := a;\nEND_TRANSITION\nSTEP S1:\nEND_STEP\nEND_PROGRAM\n");
+  ASSERT_FALSE(tree.root().has_error()) << print_sexp(tree.root());
+  Outline o = outline(tree.root());
+  ASSERT_EQ(o.pous.size(), 1u);
+  ASSERT_EQ(o.pous[0].members().size(), 1u);
+  EXPECT_EQ(o.pous[0].members()[0].kind(), PouKind::Action);
+  EXPECT_EQ(o.pous[0].members()[0].name(), "Act");
+}
+
 TEST(Ast, ExpressionsAndOperators) {
   SyntaxTree tree = SyntaxTree::parse("x := a + b * 2; y := NOT c; z := p^.q[1]; f(1);");
   ASSERT_FALSE(tree.root().has_error()) << print_sexp(tree.root());
