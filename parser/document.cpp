@@ -8,6 +8,7 @@
 
 #include "parser/conditional_branches.hpp"
 #include "parser/containers/read_container.hpp"
+#include "parser/containers/xml_text.hpp"
 #include "parser/diagnostic_codes.hpp"
 #include "parser/source/flat_comments.hpp"
 #include "parser/syntax_diagnostics.hpp"
@@ -59,16 +60,12 @@ bool looks_like_xml(std::string_view text) {
 std::string xml_root_name(std::string_view text) {
   size_t i = 0;
   while ((i = text.find('<', i)) != std::string_view::npos) {
-    if (text.compare(i, 4, "<!--") == 0) {
-      size_t end = text.find("-->", i);
-      if (end == std::string_view::npos) break;
-      i = end + 3;
-    } else if (text.compare(i, 2, "<?") == 0 || text.compare(i, 2, "<!") == 0) {
-      ++i;
-    } else {
-      size_t end = text.find_first_of(" \t\r\n/>", i + 1);
+    const size_t skipped = containers::skip_special_markup(text, i);
+    if (skipped == std::string_view::npos) {
+      const size_t end = text.find_first_of(" \t\r\n/>", i + 1);
       return std::string(text.substr(i + 1, (end == std::string_view::npos ? text.size() : end) - i - 1));
     }
+    i = skipped;
   }
   return "?";
 }

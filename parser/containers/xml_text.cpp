@@ -99,10 +99,83 @@ std::string unescape_xml(std::string_view raw) {
   return out;
 }
 
+// Where markup that starts at `at` ('<' of a comment, CDATA section, processing
+// instruction or doctype) ends: just past its terminator; npos when it is none
+// of these or is not terminated.
+size_t skip_special_markup(std::string_view text, size_t at) {
+  const auto past = [&](std::string_view terminator, size_t from) {
+    const size_t end = text.find(terminator, from);
+    return end == std::string_view::npos ? text.size() : end + terminator.size();
+  };
+  if (text.compare(at, 4, "<!--") == 0) return past("-->", at + 4);
+  if (text.compare(at, 9, "<![CDATA[") == 0) return past("]]>", at + 9);
+  if (text.compare(at, 2, "<?") == 0) return past("?>", at + 2);
+  if (text.compare(at, 2, "<!") == 0) {
+    // <!DOCTYPE ...>, possibly with an internal subset in [...].
+    const size_t bracket = text.find('[', at);
+    const size_t close = text.find('>', at);
+    if (bracket != std::string_view::npos && bracket < close) return past(">", past("]", bracket));
+    return past(">", at + 2);
+  }
+  return std::string_view::npos;
+}
+
+// The offset of the first raw '<' inside an attribute value. pugixml accepts it
+// (CODESYS writes creationDateTime="<NORMALIZED>" when told to hide dates), but
+// XML forbids it and other tools reject the file.
+namespace {
+
+std::optional<size_t> lt_in_attribute(std::string_view text) {
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  size_t at = 0;
+  while ((at = text.find('<', at)) != std::string_view::npos) {
+    if (const size_t skipped = skip_special_markup(text, at); skipped != std::string_view::npos) {
+      at = skipped;
+      continue;
+    }
+    size_t i = at + 1;
+    if (i < text.size() && text[i] == '/') {
+      at = i;
+      continue;
+    }
+    while (i < text.size() && !space(text[i]) && text[i] != '>' && text[i] != '/') ++i;
+    // Attributes: name = "value" ... until '>' or '/>'.
+    while (true) {
+      while (i < text.size() && space(text[i])) ++i;
+      if (i >= text.size() || text[i] == '>' || text[i] == '/' || text[i] == '<') break;
+      while (i < text.size() && !space(text[i]) && text[i] != '=' && text[i] != '>' && text[i] != '<') ++i;
+      while (i < text.size() && space(text[i])) ++i;
+      if (i >= text.size() || text[i] != '=') break;
+      ++i;
+      while (i < text.size() && space(text[i])) ++i;
+      if (i >= text.size() || (text[i] != '"' && text[i] != '\'')) break;
+      const char quote = text[i];
+      const size_t close = text.find(quote, i + 1);
+      if (close == std::string_view::npos) return std::nullopt;
+      if (const size_t lt = text.substr(i + 1, close - i - 1).find('<'); lt != std::string_view::npos) {
+        return i + 1 + lt;
+      }
+      i = close + 1;
+    }
+    at = i;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ContainerIssue> load_container_xml(pugi::xml_document& xml, std::string_view text) {
   constexpr unsigned kFlags = (pugi::parse_default | pugi::parse_cdata) & ~pugi::parse_eol & ~pugi::parse_escapes;
   const pugi::xml_parse_result parsed = xml.load_buffer(text.data(), text.size(), kFlags, pugi::encoding_utf8);
-  if (parsed) return std::nullopt;
+  if (parsed) {
+    // pugixml accepts a raw '<' inside an attribute value; XML (and the vendors' tools) do not.
+    const auto lt = lt_in_attribute(text);
+    if (!lt) return std::nullopt;
+    const source::LineIndex lines(text);
+    const auto offset = static_cast<uint32_t>(*lt);
+    return ContainerIssue{offset, fmt::format("malformed XML at line {}: '<' inside an attribute value",
+                                              lines.position_of(offset).line + 1)};
+  }
   const auto offset = static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(parsed.offset), text.size()));
   const source::LineIndex lines(text);
   return ContainerIssue{

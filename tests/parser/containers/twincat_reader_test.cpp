@@ -331,3 +331,24 @@ TEST(TwinCatReader, InterfacePropertiesWithEmptyAccessors) {
 
 }  // namespace
 }  // namespace rung::containers
+
+namespace rung::containers {
+namespace {
+
+// The XML loader is shared: a raw '<' inside an attribute value (which pugixml accepts) is
+// reported for TwinCAT files as for PLCopen ones, and the ST is still read.
+TEST(TwinCatReader, LessThanInAnAttributeValueIsReported) {
+  const std::string text =
+      "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+      "<TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"<hidden>\">\n"
+      "  <POU Name=\"P\"><Declaration><![CDATA[PROGRAM P]]></Declaration></POU>\n"
+      "</TcPlcObject>\n";
+  const ContainerDocument doc = read_twincat(text);
+  ASSERT_EQ(doc.issues.size(), 1u);
+  EXPECT_EQ(doc.issues[0].message, "malformed XML at line 2: '<' inside an attribute value");
+  EXPECT_EQ(doc.issues[0].offset, text.find("<hidden>"));
+  EXPECT_EQ(doc.virtual_text, "PROGRAM P");
+}
+
+}  // namespace
+}  // namespace rung::containers
