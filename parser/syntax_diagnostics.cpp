@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <string_view>
 
 #include "parser/diagnostic_codes.hpp"
+#include "parser/source/line_index.hpp"
 
 namespace rung {
 namespace {
@@ -638,15 +640,10 @@ class Collector {
     return false;
   }
 
+  // Built on first use: most files have no syntax error and never need it.
   uint32_t line_of(uint32_t offset) {
-    if (line_starts_.empty()) {
-      const std::string& t = tree_.text();
-      line_starts_.push_back(0);
-      for (size_t i = 0; i < t.size(); ++i)
-        if (t[i] == '\n') line_starts_.push_back(static_cast<uint32_t>(i + 1));
-    }
-    auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-    return static_cast<uint32_t>(it - line_starts_.begin());
+    if (!lines_) lines_.emplace(tree_.text());
+    return lines_->position_of(offset).line;
   }
 
   // Whether an error node's parent is a statement list: then a ';' between lines was likely meant.
@@ -675,7 +672,7 @@ class Collector {
   const SyntaxTree& tree_;
   const SyntaxDiagnosticOptions& options_;
   std::vector<Diagnostic> out_;
-  std::vector<uint32_t> line_starts_;
+  std::optional<source::LineIndex> lines_;
   uint32_t skip_errors_until_ = 0;
   size_t dropped_ = 0;
 };
