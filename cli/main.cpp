@@ -4,6 +4,7 @@
 #include <exception>
 #include <string>
 
+#include "cli/check_command.hpp"
 #include "cli/explain_command.hpp"
 #include "cli/init_command.hpp"
 #include "cli/parse_command.hpp"
@@ -48,6 +49,21 @@ int run(int argc, char** argv) {
   parse->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
   parse->add_flag("-q,--quiet", parse_options.quiet, "Do not print the closing summary line");
   parse->add_option("-j,--jobs", parse_options.threads, "Files parsed in parallel (default: one per core)");
+
+  rung::cli::CheckCommandOptions check_options;
+  std::string check_format = "human";
+  std::string check_profile;
+  CLI::App* check = app.add_subcommand(
+      "check", "Check a project: syntax, names, types, calls and declarations across all its files");
+  check->add_option("paths", check_options.paths,
+                    "Files or folders to report on (default: the current folder); the whole project is read");
+  check->add_option("--format", check_format, "Output format (sarif: SARIF 2.1.0 for code scanning)")
+      ->check(CLI::IsMember({"human", "json", "sarif"}));
+  check->add_option("--profile", check_profile, "Semantics profile, overrides rung.toml")
+      ->check(CLI::IsMember({"codesys", "iec", "twincat"}));
+  check->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
+  check->add_flag("-q,--quiet", check_options.quiet, "Do not print the closing summary line");
+  check->add_option("-j,--jobs", check_options.threads, "Threads (default: one per core)");
 
   std::string explain_code;
   CLI::App* explain =
@@ -101,6 +117,14 @@ int run(int argc, char** argv) {
   if (*init) return rung::cli::run_init_command(init_dir, init_force, stdout, stderr);
   if (*explain) return rung::cli::run_explain_command(explain_code, stdout, stderr);
 
+  if (*check) {
+    check_options.color = color;
+    check_options.format = check_format == "json"    ? rung::cli::CheckFormat::Json
+                           : check_format == "sarif" ? rung::cli::CheckFormat::Sarif
+                                                     : rung::cli::CheckFormat::Human;
+    if (!check_profile.empty()) check_options.profile = rung::project::parse_profile(check_profile);
+    return rung::cli::run_check_command(check_options, stdout, stderr);
+  }
   if (*parse) {
     parse_options.color = color;
     parse_options.format = format_text == "json" ? rung::cli::OutputFormat::Json : rung::cli::OutputFormat::Human;

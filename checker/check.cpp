@@ -1,0 +1,180 @@
+#include "checker/check.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <thread>
+
+#include "checker/semantic/body_checker.hpp"
+#include "checker/semantic/declaration_checker.hpp"
+#include "parser/file_walk.hpp"
+#include "parser/parallel_load.hpp"
+
+#ifndef RUNG_LIBRARY_DIR
+#define RUNG_LIBRARY_DIR "library"
+#endif
+
+namespace rung::check {
+namespace fs = std::filesystem;
+
+fs::path standard_library_dir() {
+  if (const char* overridden = std::getenv("RUNG_LIBRARY_DIR"); overridden && *overridden) return overridden;
+  return RUNG_LIBRARY_DIR;
+}
+
+std::vector<fs::path> default_library_folders(project::Profile profile) {
+  const fs::path root = standard_library_dir();
+  std::vector<fs::path> folders{root / "iec"};
+  if (profile == project::Profile::Codesys || profile == project::Profile::Twincat) {
+    for (const char* name : {"Operators", "Standard", "Standard64", "Util"}) folders.push_back(root / "codesys" / name);
+  }
+  return folders;
+}
+
+namespace {
+
+std::vector<fs::path> st_files_below(const fs::path& folder) {
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) return {};
+  return collect_source_files({folder}).files;
+}
+
+void apply_overrides(std::vector<Diagnostic>& diagnostics, const project::ProjectConfig& config) {
+  if (config.severity_overrides.empty()) return;
+  std::vector<Diagnostic> kept;
+  for (auto& diagnostic : diagnostics) {
+    auto found = config.severity_overrides.find(diagnostic.code);
+    if (found == config.severity_overrides.end()) {
+      kept.push_back(std::move(diagnostic));
+    } else if (found->second) {
+      diagnostic.severity = *found->second;
+      kept.push_back(std::move(diagnostic));
+    }
+  }
+  diagnostics = std::move(kept);
+}
+
+// Every POU and member of a file, so each body is checked once.
+void collect_pous(const Symbol* symbol, std::vector<const Symbol*>& out) {
+  if (!is_pou_kind(symbol->kind)) return;
+  out.push_back(symbol);
+  for (const Symbol* member : symbol->ordered) collect_pous(member, out);
+}
+
+}  // namespace
+
+void Workspace::add_library_folder(const fs::path& folder, unsigned threads) {
+  const std::string name = folder.filename().string();
+  load_documents_in_order(st_files_below(folder), threads, [&](LoadedDocument& loaded) {
+    if (!loaded.document) return;
+    model_->add_source(std::make_unique<Document>(std::move(*loaded.document)), name);
+  });
+}
+
+std::unique_ptr<Workspace> Workspace::load_files(const std::vector<fs::path>& files, const project::ProjectConfig& config,
+                                                 const LoadOptions& options) {
+  std::unique_ptr<Workspace> workspace(new Workspace());
+  workspace->config_ = config;
+  workspace->model_ = std::make_unique<ProjectModel>(make_profile(config));
+  load_documents_in_order(files, options.threads, [&](LoadedDocument& loaded) {
+    if (!loaded.document) {
+      workspace->load_errors.push_back(loaded.path.string() + ": " + loaded.error);
+      return;
+    }
+    workspace->model_->add_source(std::make_unique<Document>(std::move(*loaded.document)));
+  });
+  if (options.standard_libraries) {
+    for (const fs::path& folder : default_library_folders(config.profile)) workspace->add_library_folder(folder, options.threads);
+  }
+  for (const fs::path& folder : config.libraries) workspace->add_library_folder(folder, options.threads);
+  workspace->model_->link();
+  return workspace;
+}
+
+std::unique_ptr<Workspace> Workspace::load(const project::ProjectConfig& config, const LoadOptions& options) {
+  std::vector<std::string> errors;
+  std::vector<fs::path> files = project::project_source_files(config, &errors);
+  auto workspace = load_files(files, config, options);
+  for (auto& error : errors) workspace->load_errors.push_back(std::move(error));
+  return workspace;
+}
+
+std::unique_ptr<Workspace> Workspace::from_texts(const std::vector<std::pair<std::string, std::string>>& files,
+                                                 const project::ProjectConfig& config, const LoadOptions& options) {
+  std::unique_ptr<Workspace> workspace(new Workspace());
+  workspace->config_ = config;
+  workspace->model_ = std::make_unique<ProjectModel>(make_profile(config));
+  for (const auto& [path, text] : files) {
+    workspace->model_->add_source(std::make_unique<Document>(Document::from_bytes(path, text)));
+  }
+  if (options.standard_libraries) {
+    for (const fs::path& folder : default_library_folders(config.profile)) workspace->add_library_folder(folder, 1);
+  }
+  for (const fs::path& folder : config.libraries) workspace->add_library_folder(folder, 1);
+  workspace->model_->link();
+  return workspace;
+}
+
+FileDiagnostics Workspace::check_source(SourceId id) const {
+  const Source& source = model_->source(id);
+  FileDiagnostics result;
+  result.source = id;
+  result.path = source.document->path();
+  std::vector<Diagnostic> semantic = source.symbols.diagnostics;
+  semantic.insert(semantic.end(), source.link_diagnostics.begin(), source.link_diagnostics.end());
+  for (const Symbol* top : source.symbols.top_level) {
+    std::vector<const Symbol*> pous;
+    collect_pous(top, pous);
+    for (const Symbol* pou : pous) BodyChecker(*model_, *pou, semantic).check();
+  }
+  check_declarations(*model_, id, semantic);
+  // Semantic findings are in tree coordinates; syntax diagnostics already in file coordinates.
+  const Document& document = *source.document;
+  for (Diagnostic& diagnostic : semantic) {
+    diagnostic.range = {document.file_offset_of(diagnostic.range.begin), document.file_end_offset_of(diagnostic.range.end)};
+    for (auto& label : diagnostic.labels) {
+      label.range = {document.file_offset_of(label.range.begin), document.file_end_offset_of(label.range.end)};
+    }
+  }
+  result.diagnostics = document.diagnostics();
+  result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(semantic.begin()),
+                            std::make_move_iterator(semantic.end()));
+  apply_overrides(result.diagnostics, config_);
+  sort_diagnostics(result.diagnostics);
+  return result;
+}
+
+std::vector<FileDiagnostics> Workspace::check_all(unsigned threads) const {
+  std::vector<SourceId> ids;
+  for (SourceId id = 0; id < model_->source_count(); ++id) {
+    if (!model_->source(id).library) ids.push_back(id);
+  }
+  std::vector<FileDiagnostics> results(ids.size());
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max<size_t>(1, ids.size())));
+  std::atomic<size_t> next{0};
+  auto work = [&]() {
+    for (size_t i = next++; i < ids.size(); i = next++) results[i] = check_source(ids[i]);
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& thread : pool) thread.join();
+  std::sort(results.begin(), results.end(), [](const FileDiagnostics& a, const FileDiagnostics& b) { return a.path < b.path; });
+  return results;
+}
+
+std::vector<SourceId> Workspace::update(SourceId id, std::string text) {
+  const std::string path = model_->source(id).document->path();
+  auto document = std::make_unique<Document>(Document::from_bytes(path, text));
+  const bool interface_changed = model_->update_source(id, std::move(document));
+  model_->link();  // a full link for now; linking only the changed file is the next step
+  if (!interface_changed) return {id};
+  std::vector<SourceId> all;
+  for (SourceId other = 0; other < model_->source_count(); ++other) {
+    if (!model_->source(other).library) all.push_back(other);
+  }
+  return all;
+}
+
+}  // namespace rung::check

@@ -1,0 +1,39 @@
+// Values known at compile time: literals, CONSTANT variables, enum values and arithmetic on them.
+// Integers are kept in 128 bits so that every ULINT and LINT value and their sums are exact.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace rung::check {
+
+struct ConstValue {
+  enum class Kind : uint8_t { Integer, Real, Bool, String, Duration, Date };
+  Kind kind = Kind::Integer;
+  __int128 integer = 0;  // Integer, Bool (0/1), Duration (nanoseconds), Date (seconds since 1970)
+  double real = 0;
+  std::string text;  // String (decoded)
+
+  static ConstValue of_integer(__int128 value) { return ConstValue{Kind::Integer, value, 0, {}}; }
+  static ConstValue of_real(double value) { return ConstValue{Kind::Real, 0, value, {}}; }
+  static ConstValue of_bool(bool value) { return ConstValue{Kind::Bool, value ? 1 : 0, 0, {}}; }
+  static ConstValue of_duration(__int128 nanoseconds) { return ConstValue{Kind::Duration, nanoseconds, 0, {}}; }
+  bool is_integer() const { return kind == Kind::Integer; }
+  bool is_number() const { return kind == Kind::Integer || kind == Kind::Real; }
+  double as_real() const { return kind == Kind::Real ? real : static_cast<double>(integer); }
+};
+
+std::string to_string(const ConstValue& value);
+std::string int128_to_string(__int128 value);
+
+// Literal text (as the grammar's literal tokens) to a value; nullopt when malformed or too big.
+std::optional<__int128> parse_integer_literal(std::string_view text);  // 123, 16#FF, 2#1010_0101
+std::optional<double> parse_real_literal(std::string_view text);
+// T#1h2m3s4ms, TIME#-5s, LT#1.5d: nanoseconds. `error` says why it is rejected (unit order, ...).
+std::optional<__int128> parse_duration_literal(std::string_view text, std::string* error = nullptr);
+// '...' or "..." with $-escapes decoded; `wide` for double quotes.
+std::optional<std::string> parse_string_literal(std::string_view text, bool* wide = nullptr);
+
+}  // namespace rung::check

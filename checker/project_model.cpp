@@ -1,0 +1,514 @@
+#include "checker/project_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "checker/constant/const_eval.hpp"
+#include "parser/diagnostic_codes.hpp"
+
+namespace rung::check {
+namespace {
+
+constexpr int kMaxInheritanceDepth = 32;  // cuts EXTENDS cycles (reported by the POU checks)
+
+Diagnostic make_diagnostic(std::string_view code, std::string message, TextRange range, std::string help = {}) {
+  Diagnostic diagnostic;
+  diagnostic.code = std::string(code);
+  const DiagnosticCodeInfo* info = find_diagnostic_code(code);
+  diagnostic.severity = info ? info->default_severity : Severity::Error;
+  diagnostic.message = std::move(message);
+  diagnostic.range = range;
+  diagnostic.help = std::move(help);
+  return diagnostic;
+}
+
+TypeKind named_kind_of(const Symbol& symbol) {
+  if (symbol.kind != SymbolKind::DataType) return TypeKind::Pou;
+  const std::string_view kind = symbol.node.kind();
+  if (kind == "struct_type") return TypeKind::Struct;
+  if (kind == "enum_type") return TypeKind::Enum;
+  if (kind == "union_type") return TypeKind::Union;
+  return TypeKind::Alias;
+}
+
+// Scopes that hold the POU's generic parameters: FUNCTION F<T : ANY_NUM>.
+SyntaxNode generic_parameters_of(const Symbol* scope) {
+  for (const Symbol* s = scope; s; s = s->owner) {
+    if (s->node) {
+      if (SyntaxNode parameters = s->node.first_child_of_kind("generic_parameters")) return parameters;
+    }
+  }
+  return {};
+}
+
+thread_local int constant_depth = 0;  // guards CONSTANT a := b; b := a; cycles
+
+}  // namespace
+
+ProjectModel::ProjectModel(const Profile& profile) : profile_(profile), types_(std::make_unique<TypeArena>()) {}
+ProjectModel::~ProjectModel() = default;
+
+SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::string library_name) {
+  const SourceId id = static_cast<SourceId>(sources_.size());
+  auto source = std::make_unique<Source>();
+  source->library = !library_name.empty();
+  source->library_name = std::move(library_name);
+  const std::string stem = std::filesystem::path(document->path()).stem().string();
+  source->document = std::move(document);
+  source->symbols = collect_file_symbols(id, *source->document, source->library, "");
+  // A plain file's GVL is named after the file (CODESYS exports GVL.st for a list called GVL).
+  // The name must outlive the symbols: keep it in the document-owned string below.
+  sources_.push_back(std::move(source));
+  Source& added = *sources_.back();
+  if (!added.symbols.global_lists.empty()) {
+    added.gvl_name_storage = stem;
+    for (Symbol* list : added.symbols.global_lists) {
+      if (list->name.empty()) list->name = added.gvl_name_storage;
+    }
+  }
+  return id;
+}
+
+bool ProjectModel::update_source(SourceId id, std::unique_ptr<Document> document) {
+  Source& source = *sources_[id];
+  const uint64_t before = source.symbols.interface_hash;
+  const std::string stem = std::filesystem::path(document->path()).stem().string();
+  source.document = std::move(document);
+  source.symbols = collect_file_symbols(id, *source.document, source.library, "");
+  source.gvl_name_storage = stem;
+  for (Symbol* list : source.symbols.global_lists) {
+    if (list->name.empty()) list->name = source.gvl_name_storage;
+  }
+  // The old symbols are gone: the caller must link() again (other files' types point at them).
+  return source.symbols.interface_hash != before;
+}
+
+std::optional<SourceId> ProjectModel::find_source(std::string_view path) const {
+  for (SourceId id = 0; id < sources_.size(); ++id) {
+    if (sources_[id]->document->path() == path) return id;
+  }
+  return std::nullopt;
+}
+
+void ProjectModel::link() {
+  globals_.clear();
+  global_variables_.clear();
+  enum_values_.clear();
+  libraries_.clear();
+  named_types_.clear();
+  enum_numbers_.clear();
+  types_ = std::make_unique<TypeArena>();
+  // Project files first, so their declarations shadow library stubs of the same name.
+  for (const bool library : {false, true}) {
+    for (auto& source : sources_) {
+      if (source->library == library) index_source(*source);
+    }
+  }
+  for (auto& source : sources_) {
+    source->link_diagnostics.clear();
+    resolve_declarations(*source);
+  }
+}
+
+void ProjectModel::index_source(Source& source) {
+  for (Symbol* symbol : source.symbols.top_level) {
+    if (symbol->name.empty()) continue;
+    if (source.library) libraries_[source.library_name].emplace(symbol->name, symbol);
+    if (symbol->kind == SymbolKind::Configuration) continue;
+    auto [it, inserted] = globals_.emplace(symbol->name, symbol);
+    if (!inserted && it->second != symbol) {
+      const Symbol* first = it->second;
+      const bool first_library = first->has(kLibrary);
+      if (first_library && !source.library) {
+        it->second = symbol;  // project shadows library (re-indexing after an edit)
+      } else if (!first_library && !source.library && first->source != symbol->source &&
+                 !(first->kind == SymbolKind::GlobalList && symbol->kind == SymbolKind::GlobalList)) {
+        const Source& other = *sources_[first->source];
+        source.link_diagnostics.push_back(make_diagnostic(
+            codes::kDuplicateDeclaration,
+            fmt::format("'{}' is already declared in {}", symbol->name, other.document->path()),
+            symbol->name_range, "POU, type and global list names must be unique in a project"));
+      }
+    }
+    if (symbol->kind == SymbolKind::GlobalList) {
+      for (Symbol* variable : symbol->ordered) {
+        if (!symbol->has(kQualifiedOnly) && !variable->name.empty()) global_variables_.emplace(variable->name, variable);
+      }
+    }
+    if (symbol->kind == SymbolKind::DataType && named_kind_of(*symbol) == TypeKind::Enum &&
+        !symbol->has(kQualifiedOnly)) {
+      for (Symbol* value : symbol->ordered) {
+        if (value->kind == SymbolKind::EnumValue) enum_values_[value->name].push_back(value);
+      }
+    }
+  }
+}
+
+void ProjectModel::resolve_declarations(Source& source) {
+  std::vector<Diagnostic>& diagnostics = source.link_diagnostics;
+  std::vector<Diagnostic> discarded;
+  std::vector<Diagnostic>& sink = source.library ? discarded : diagnostics;
+  for (Symbol& symbol : source.symbols.storage) resolve_symbol(symbol, sink);
+}
+
+const Type* ProjectModel::named_type_of(const Symbol* symbol) const {
+  auto found = named_types_.find(symbol);
+  return found == named_types_.end() ? nullptr : found->second;
+}
+
+void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagnostics) {
+  switch (symbol.kind) {
+    case SymbolKind::Variable:
+      if (!symbol.type) symbol.type = symbol.type_node ? resolve_type(symbol.type_node, symbol.owner, &diagnostics)
+                                                      : types_->unknown();
+      break;
+    case SymbolKind::DataType: {
+      const Type* type = type_of(&symbol);
+      Type* mutable_type = const_cast<Type*>(type);  // filled once, here, before anyone reads it
+      if (type->kind == TypeKind::Alias && !type->element && symbol.type_node) {
+        mutable_type->element = resolve_type(symbol.type_node, &symbol, &diagnostics);
+        mutable_type->bits = underlying(type)->bits;
+      } else if (type->kind == TypeKind::Enum && !type->element) {
+        SyntaxNode base = symbol.node.child_by_field("base");
+        mutable_type->element = base ? resolve_type(base, &symbol, &diagnostics) : types_->elementary("INT");
+        mutable_type->bits = mutable_type->element->bits;
+        compute_enum_values(symbol);
+      }
+      resolve_bases(symbol, diagnostics);
+      break;
+    }
+    case SymbolKind::EnumValue:
+      symbol.type = symbol.owner ? type_of(symbol.owner) : types_->unknown();
+      break;
+    case SymbolKind::Program:
+    case SymbolKind::Function:
+    case SymbolKind::FunctionBlock:
+    case SymbolKind::Class:
+    case SymbolKind::Interface:
+    case SymbolKind::Method:
+    case SymbolKind::Property:
+      if (!symbol.result_type) {
+        symbol.result_type = symbol.type_node ? resolve_type(symbol.type_node, &symbol, &diagnostics) : types_->void_type();
+      }
+      symbol.type = type_of(&symbol);
+      resolve_bases(symbol, diagnostics);
+      break;
+    default:
+      break;
+  }
+}
+
+void ProjectModel::resolve_bases(Symbol& symbol, std::vector<Diagnostic>& diagnostics) {
+  symbol.bases.clear();
+  symbol.interfaces.clear();
+  symbol.base = nullptr;
+  for (SyntaxNode node : symbol.base_nodes) {
+    const Symbol* target = resolve_type_symbol(node, &symbol, &diagnostics);
+    if (target && target != &symbol) symbol.bases.push_back(target);
+  }
+  if (!symbol.bases.empty()) symbol.base = symbol.bases.front();
+  for (SyntaxNode node : symbol.interface_nodes) {
+    if (const Symbol* target = resolve_type_symbol(node, &symbol, &diagnostics)) symbol.interfaces.push_back(target);
+  }
+}
+
+const Symbol* ProjectModel::resolve_type_symbol(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) {
+  const Type* type = resolve_type_name(name, scope, diagnostics);
+  return type ? type->declaration : nullptr;
+}
+
+const Type* ProjectModel::type_of(const Symbol* symbol) const {
+  if (!symbol) return types_->unknown();
+  switch (symbol->kind) {
+    case SymbolKind::Variable:
+    case SymbolKind::EnumValue:
+      return symbol->type ? symbol->type : types_->unknown();
+    case SymbolKind::DataType:
+    case SymbolKind::Program:
+    case SymbolKind::Function:
+    case SymbolKind::FunctionBlock:
+    case SymbolKind::Class:
+    case SymbolKind::Interface:
+    case SymbolKind::Method:
+    case SymbolKind::Property:
+    case SymbolKind::Action: {
+      if (const Type* known = named_type_of(symbol)) return known;
+      auto* self = const_cast<ProjectModel*>(this);  // named types are created once per link
+      Type* type = self->types_->make_named(named_kind_of(*symbol), std::string(symbol->name), symbol);
+      if (type->kind == TypeKind::Pou) type->bits = 0;
+      self->named_types_.emplace(symbol, type);
+      return type;
+    }
+    default:
+      return types_->unknown();
+  }
+}
+
+const Type* ProjectModel::resolve_type(SyntaxNode spec, const Symbol* scope, std::vector<Diagnostic>* diagnostics) {
+  if (!spec) return types_->unknown();
+  const std::string_view kind = spec.kind();
+  if (kind == "type_name" || kind == "identifier" || kind == "qualified_name") {
+    return resolve_type_name(spec, scope, diagnostics);
+  }
+  if (kind == "string_type") {
+    const bool wide = names_equal(spec.text().substr(0, 7), "WSTRING");
+    uint32_t length = profile_.default_string_length;
+    if (SyntaxNode length_node = spec.child_by_field("length")) {
+      auto value = constant_value(length_node, scope);
+      if (value && value->is_integer() && value->integer > 0 && value->integer < (1 << 20)) {
+        length = static_cast<uint32_t>(value->integer);
+      } else if (diagnostics && !value && length_node.kind() != "member_expression" &&
+                 !(length_node.kind() == "identifier" && !lookup(scope, length_node.text()))) {
+        diagnostics->push_back(make_diagnostic(codes::kNotConstant,
+                                               "the length of a STRING must be a constant expression",
+                                               length_node.range(), "use a literal or a VAR CONSTANT"));
+      }
+    }
+    return types_->string_type(wide, length);
+  }
+  if (kind == "array_type") {
+    std::vector<ArrayDimension> dimensions;
+    for (uint32_t i = 0; i < spec.named_child_count(); ++i) {
+      SyntaxNode child = spec.named_child(i);
+      if (child.kind() == "wildcard") {
+        dimensions.push_back({.open = true});
+      } else if (child.kind() == "range") {
+        ArrayDimension dimension;
+        auto lower = constant_value(child.child_by_field("lower"), scope);
+        auto upper = constant_value(child.child_by_field("upper"), scope);
+        if (lower && upper && lower->is_integer() && upper->is_integer()) {
+          dimension.lower = static_cast<int64_t>(lower->integer);
+          dimension.upper = static_cast<int64_t>(upper->integer);
+        } else {
+          dimension.known = false;
+        }
+        dimensions.push_back(dimension);
+      }
+    }
+    const Type* element = resolve_type(spec.child_by_field("element"), scope, diagnostics);
+    return types_->array_of(element, std::move(dimensions));
+  }
+  if (kind == "pointer_type") {
+    SyntaxNode target = spec.child_by_field("type");
+    return types_->pointer_to(target ? resolve_type(target, scope, diagnostics) : types_->unknown());
+  }
+  if (kind == "reference_type") {
+    return types_->reference_to(resolve_type(spec.child_by_field("type"), scope, diagnostics));
+  }
+  if (kind == "subrange_type") {
+    const Type* base = resolve_type(spec.child_by_field("base"), scope, diagnostics);
+    SyntaxNode range = spec.child_by_field("range");
+    auto lower = range ? constant_value(range.child_by_field("lower"), scope) : std::nullopt;
+    auto upper = range ? constant_value(range.child_by_field("upper"), scope) : std::nullopt;
+    if (!lower || !upper || !lower->is_integer() || !upper->is_integer()) return base;
+    return types_->subrange(base, static_cast<int64_t>(lower->integer), static_cast<int64_t>(upper->integer));
+  }
+  if (kind == "struct_type" || kind == "enum_type") {
+    // An inline STRUCT or implicit enum in a declaration: an anonymous named type.
+    Type* type = types_->make_named(kind == "struct_type" ? TypeKind::Struct : TypeKind::Enum, "(anonymous)", nullptr);
+    if (type->kind == TypeKind::Enum) {
+      SyntaxNode base = spec.child_by_field("base");
+      type->element = base ? resolve_type(base, scope, diagnostics) : types_->elementary("INT");
+      type->bits = type->element->bits;
+    }
+    return type;
+  }
+  return types_->unknown();  // generic_type, variadic_type: not checked
+}
+
+const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) {
+  const std::string_view text = name.text();
+  // Dotted names: Library.Type, Namespace.Type, GVL-less qualified types (__SYSTEM.TYPE_CLASS).
+  if (const size_t dot = text.rfind('.'); dot != std::string_view::npos) {
+    const std::string_view qualifier = text.substr(0, text.find('.'));
+    const std::string_view last = text.substr(dot + 1);
+    if (is_library_namespace(qualifier)) {
+      if (const Symbol* symbol = find_in_library(qualifier, last)) return type_of(symbol);
+    }
+    if (const Symbol* symbol = find_global(last); symbol && symbol->kind != SymbolKind::GlobalList) return type_of(symbol);
+    if (diagnostics) {
+      diagnostics->push_back(make_diagnostic(
+          codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text), name.range(),
+          "if it comes from a vendor library, add that library's declarations as stubs (rung.toml [libraries])"));
+    }
+    return types_->unknown();
+  }
+  if (SyntaxNode parameters = generic_parameters_of(scope)) {
+    for (SyntaxNode parameter : parameters.children_of_kind("generic_parameter")) {
+      SyntaxNode parameter_name = parameter.child_by_field("name");
+      if (parameter_name && names_equal(parameter_name.text(), text)) {
+        SyntaxNode constraint = parameter.child_by_field("constraint");
+        const Type* generic = constraint ? types_->generic(constraint.text()) : nullptr;
+        return generic ? generic : types_->generic(GenericKind::Any);
+      }
+    }
+  }
+  if (const Type* elementary = types_->elementary(text, false)) return elementary;
+  if (const Type* generic = types_->generic(text)) return generic;
+  if (const Symbol* symbol = find_global(text); symbol && symbol->kind != SymbolKind::GlobalList) {
+    return type_of(symbol);
+  }
+  if (const Type* vendor = types_->elementary(text, true)) return vendor;
+  if (diagnostics) {
+    std::vector<std::string_view> candidates = global_type_names();
+    const std::string_view suggestion = closest_name(text, candidates);
+    diagnostics->push_back(make_diagnostic(
+        codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text), name.range(),
+        suggestion.empty()
+            ? "declare it, or if it comes from a vendor library, add that library's stubs (rung.toml [libraries])"
+            : fmt::format("did you mean '{}'?", suggestion)));
+  }
+  return types_->unknown();
+}
+
+std::vector<std::string_view> ProjectModel::global_type_names() const {
+  std::vector<std::string_view> names;
+  for (const auto& [name, symbol] : globals_) {
+    if (symbol->kind == SymbolKind::DataType || symbol->kind == SymbolKind::FunctionBlock ||
+        symbol->kind == SymbolKind::Interface || symbol->kind == SymbolKind::Class) {
+      names.push_back(name);
+    }
+  }
+  for (std::string_view name : {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", "LINT", "USINT",
+                                "UINT", "UDINT", "ULINT", "REAL", "LREAL", "TIME", "LTIME", "DATE", "TOD", "DT",
+                                "STRING", "WSTRING", "CHAR", "WCHAR"}) {
+    names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+void ProjectModel::compute_enum_values(const Symbol& enum_symbol) {
+  __int128 next = 0;
+  for (const Symbol* value : enum_symbol.ordered) {
+    if (value->kind != SymbolKind::EnumValue) continue;
+    if (SyntaxNode written = value->node.child_by_field("value")) {
+      auto constant = constant_value(written, &enum_symbol);
+      if (constant && (constant->is_integer() || constant->kind == ConstValue::Kind::Bool)) next = constant->integer;
+    }
+    enum_numbers_[value] = next;
+    ++next;
+  }
+}
+
+std::optional<__int128> ProjectModel::enum_value(const Symbol* value) const {
+  auto found = enum_numbers_.find(value);
+  if (found == enum_numbers_.end()) return std::nullopt;
+  return found->second;
+}
+
+std::optional<ConstValue> ProjectModel::constant_value(SyntaxNode expression, const Symbol* scope) const {
+  if (constant_depth > 32) return std::nullopt;
+  ++constant_depth;
+  ConstEvaluator evaluator([this, scope](SyntaxNode name) -> std::optional<ConstValue> {
+    const Symbol* symbol = nullptr;
+    if (name.kind() == "member_expression") {
+      SyntaxNode object = name.child_by_field("object");
+      SyntaxNode member = name.child_by_field("member");
+      if (!object || !member || object.kind() != "identifier") return std::nullopt;
+      const Symbol* container = lookup(scope, object.text());
+      if (!container) return std::nullopt;
+      symbol = find_member(container, member.text());
+    } else {
+      symbol = lookup(scope, name.text());
+    }
+    if (!symbol) return std::nullopt;
+    if (symbol->kind == SymbolKind::EnumValue) {
+      if (auto number = enum_value(symbol)) return ConstValue::of_integer(*number);
+      return std::nullopt;
+    }
+    if (symbol->kind == SymbolKind::Variable && symbol->has(kConstant)) {
+      SyntaxNode initial = symbol->node.child_by_field("value");
+      if (initial) return constant_value(initial, symbol->owner);
+    }
+    return std::nullopt;
+  });
+  auto value = evaluator.evaluate(expression);
+  --constant_depth;
+  return value;
+}
+
+const Symbol* ProjectModel::find_global(std::string_view name) const {
+  auto found = globals_.find(name);
+  return found == globals_.end() ? nullptr : found->second;
+}
+
+const Symbol* ProjectModel::find_global_variable(std::string_view name) const {
+  auto found = global_variables_.find(name);
+  return found == global_variables_.end() ? nullptr : found->second;
+}
+
+const std::vector<const Symbol*>* ProjectModel::find_enum_values(std::string_view name) const {
+  auto found = enum_values_.find(name);
+  return found == enum_values_.end() ? nullptr : &found->second;
+}
+
+bool ProjectModel::is_library_namespace(std::string_view name) const { return libraries_.contains(name); }
+
+const Symbol* ProjectModel::find_in_library(std::string_view library, std::string_view name) const {
+  auto found = libraries_.find(library);
+  if (found == libraries_.end()) return nullptr;
+  auto symbol = found->second.find(name);
+  return symbol == found->second.end() ? nullptr : symbol->second;
+}
+
+const Symbol* ProjectModel::find_member(const Symbol* container, std::string_view name) const {
+  for (int depth = 0; container && depth < kMaxInheritanceDepth; ++depth) {
+    if (const Symbol* member = container->own_member(name)) return member;
+    if (container->bases.size() > 1) {
+      for (const Symbol* base : container->bases) {
+        if (const Symbol* member = find_member(base, name)) return member;
+      }
+      return nullptr;
+    }
+    container = container->base;
+  }
+  return nullptr;
+}
+
+const Symbol* ProjectModel::lookup(const Symbol* scope, std::string_view name) const {
+  for (const Symbol* s = scope; s; s = s->owner) {
+    if (names_equal(s->name, name) && is_pou_kind(s->kind)) return s;  // the function's own result
+    if (const Symbol* member = find_member(s, name)) return member;
+  }
+  if (const Symbol* variable = find_global_variable(name)) return variable;
+  if (const Symbol* global = find_global(name)) return global;
+  if (const auto* values = find_enum_values(name); values && !values->empty()) return values->front();
+  return nullptr;
+}
+
+bool ProjectModel::has_unresolved_base(const Symbol* scope) const {
+  for (const Symbol* s = scope; s; s = s->owner) {
+    int depth = 0;
+    for (const Symbol* c = s; c && depth < kMaxInheritanceDepth; c = c->base, ++depth) {
+      if (c->bases.size() < c->base_nodes.size()) return true;
+    }
+  }
+  return false;
+}
+
+std::vector<std::string_view> ProjectModel::visible_names(const Symbol* scope) const {
+  std::vector<std::string_view> names;
+  for (const Symbol* s = scope; s; s = s->owner) {
+    int depth = 0;
+    for (const Symbol* c = s; c && depth < kMaxInheritanceDepth; c = c->base, ++depth) {
+      for (const Symbol* member : c->ordered) names.push_back(member->name);
+    }
+  }
+  for (const auto& [name, symbol] : global_variables_) names.push_back(name);
+  for (const auto& [name, symbol] : globals_) names.push_back(name);
+  for (const auto& [name, values] : enum_values_) names.push_back(name);
+  std::sort(names.begin(), names.end(), [](std::string_view a, std::string_view b) { return upper_name(a) < upper_name(b); });
+  names.erase(std::unique(names.begin(), names.end(), [](std::string_view a, std::string_view b) { return names_equal(a, b); }),
+              names.end());
+  return names;
+}
+
+std::vector<const Symbol*> ProjectModel::top_level_symbols(SourceId id) const {
+  const auto& top = sources_[id]->symbols.top_level;
+  return {top.begin(), top.end()};
+}
+
+}  // namespace rung::check

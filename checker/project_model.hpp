@@ -1,0 +1,115 @@
+// The semantic model of a whole project: every source file and library stub with its symbols,
+// the global index that ties names together across files (in any order), and the types of all
+// declarations. Built in two steps: add/update sources (per-file declaration pass), then link()
+// (global index, types, inheritance). After link() the model is read-only, so bodies can be
+// checked in parallel and the language server can ask it questions.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "checker/constant/const_value.hpp"
+#include "checker/profile.hpp"
+#include "checker/symbols/file_symbols.hpp"
+#include "checker/types/type.hpp"
+#include "parser/document.hpp"
+
+namespace rung::check {
+
+struct Source {
+  std::unique_ptr<Document> document;
+  FileSymbols symbols;
+  bool library = false;
+  std::string library_name;  // the stub library's folder name (namespace), empty for project files
+  // Findings of the link step that belong to this file (unknown types in declarations, ...).
+  std::vector<Diagnostic> link_diagnostics;
+  std::string gvl_name_storage;  // a plain file's GVL name (its file name), viewed by its symbols
+};
+
+class ProjectModel {
+ public:
+  explicit ProjectModel(const Profile& profile);
+  ~ProjectModel();
+  ProjectModel(const ProjectModel&) = delete;
+  ProjectModel& operator=(const ProjectModel&) = delete;
+
+  const Profile& profile() const { return profile_; }
+
+  // Adds a parsed file; `library_name` non-empty marks a stub library file. Call link() after.
+  SourceId add_source(std::unique_ptr<Document> document, std::string library_name = {});
+  // Replaces a file's text (an editor change); link() must follow. Returns whether what other
+  // files can see changed; if not, only this file's diagnostics can differ.
+  bool update_source(SourceId id, std::unique_ptr<Document> document);
+
+  // Ties names across files and resolves every declaration's type. Deterministic.
+  void link();
+
+  size_t source_count() const { return sources_.size(); }
+  const Source& source(SourceId id) const { return *sources_[id]; }
+  std::optional<SourceId> find_source(std::string_view path) const;
+
+  // --- Name lookup -------------------------------------------------------------------------
+  // A global POU, data type or GVL by name (project declarations shadow library stubs).
+  const Symbol* find_global(std::string_view name) const;
+  // A global variable visible without qualifier (not in a qualified_only list).
+  const Symbol* find_global_variable(std::string_view name) const;
+  // Enum values with this name in enums that allow unqualified access.
+  const std::vector<const Symbol*>* find_enum_values(std::string_view name) const;
+  // A library namespace (the stub folder's name, e.g. Standard, Util).
+  bool is_library_namespace(std::string_view name) const;
+  const Symbol* find_in_library(std::string_view library, std::string_view name) const;
+  // A member of a POU, struct or interface, also inherited (EXTENDS); nullptr if none.
+  const Symbol* find_member(const Symbol* container, std::string_view name) const;
+  // What a bare name means inside `scope` (a POU or member): locals, then the owner's members
+  // and bases, then globals. Returns nullptr if nothing is visible by that name.
+  const Symbol* lookup(const Symbol* scope, std::string_view name) const;
+  // Whether `scope`, its owners or their bases EXTEND something that could not be resolved: names
+  // may come from there, so "not declared" would be a guess.
+  bool has_unresolved_base(const Symbol* scope) const;
+  // Every name visible in `scope` (for "did you mean" and completion), deduplicated.
+  std::vector<std::string_view> visible_names(const Symbol* scope) const;
+  std::vector<std::string_view> global_type_names() const;
+
+  // --- Types --------------------------------------------------------------------------------
+  TypeArena& types() const { return *types_; }
+  // The type of a symbol: a variable's declared type, a POU's instance type, a data type.
+  const Type* type_of(const Symbol* symbol) const;
+  // Resolves a type written in `scope`; unknown names give E002 in `diagnostics` if given.
+  const Type* resolve_type(SyntaxNode type_spec, const Symbol* scope, std::vector<Diagnostic>* diagnostics);
+  // The constant value of an expression in `scope` (literals, CONSTANTs, enum values).
+  std::optional<ConstValue> constant_value(SyntaxNode expression, const Symbol* scope) const;
+  // An enum value's integer value.
+  std::optional<__int128> enum_value(const Symbol* value) const;
+
+  // Everything in declaration order: for checks that walk all POUs.
+  std::vector<const Symbol*> top_level_symbols(SourceId id) const;
+
+ private:
+  void index_source(Source& source);
+  void resolve_declarations(Source& source);
+  void resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagnostics);
+  void resolve_bases(Symbol& symbol, std::vector<Diagnostic>& diagnostics);
+  const Symbol* resolve_type_symbol(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics);
+  const Type* named_type_of(const Symbol* symbol) const;
+  const Type* resolve_type_name(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics);
+  void compute_enum_values(const Symbol& enum_symbol);
+
+  Profile profile_;
+  std::vector<std::unique_ptr<Source>> sources_;
+  std::unique_ptr<TypeArena> types_;
+  using NameMap = std::unordered_map<std::string_view, const Symbol*, NameHash, NameEqual>;
+  NameMap globals_;           // POUs, data types and GVLs
+  NameMap global_variables_;  // unqualified global variables
+  std::unordered_map<std::string_view, std::vector<const Symbol*>, NameHash, NameEqual> enum_values_;
+  std::unordered_map<std::string_view, NameMap, NameHash, NameEqual> libraries_;
+  std::unordered_map<const Symbol*, const Type*> named_types_;  // data types and POUs
+  std::unordered_map<const Symbol*, __int128> enum_numbers_;
+  mutable std::mutex types_mutex_;  // derived types may be created while bodies are checked
+};
+
+}  // namespace rung::check

@@ -1,0 +1,614 @@
+// What an expression is: its type, the declaration it names, its constant value.
+#include <fmt/format.h>
+
+#include "checker/constant/const_eval.hpp"
+#include "checker/semantic/body_checker.hpp"
+#include "checker/semantic/builtins.hpp"
+#include "parser/diagnostic_codes.hpp"
+
+namespace rung::check {
+namespace {
+
+constexpr int kMaxDepth = 400;  // deeper expressions are typed Unknown (no stack exhaustion)
+
+bool is_comparison(std::string_view op) {
+  return op == "=" || op == "<>" || op == "<" || op == "<=" || op == ">" || op == ">=";
+}
+
+bool is_logical(std::string_view op) {
+  return op == "AND" || op == "&" || op == "OR" || op == "XOR" || op == "AND_THEN" || op == "OR_ELSE";
+}
+
+}  // namespace
+
+ExprInfo BodyChecker::type_of(SyntaxNode expression) { return type_expression(expression, 0); }
+
+ExprInfo BodyChecker::type_expression(SyntaxNode expression, int depth) {
+  ExprInfo unknown{.type = types_.unknown()};
+  if (!expression || depth > kMaxDepth || expression.is_error() || expression.is_missing()) return unknown;
+  switch (ast::expression_kind(expression)) {
+    case ast::ExpressionKind::Literal:
+      return type_literal(expression);
+    case ast::ExpressionKind::Parenthesized: {
+      ExprInfo inner = type_expression(expression.named_child(0), depth + 1);
+      inner.assignable = false;
+      return inner;
+    }
+    case ast::ExpressionKind::Identifier:
+      return type_identifier(expression);
+    case ast::ExpressionKind::Member:
+      return type_member(expression, depth);
+    case ast::ExpressionKind::Index:
+      return type_index(expression, depth);
+    case ast::ExpressionKind::Dereference:
+      return type_dereference(expression, depth);
+    case ast::ExpressionKind::Binary:
+      return type_binary(expression, depth);
+    case ast::ExpressionKind::Unary:
+      return type_unary(expression, depth);
+    case ast::ExpressionKind::Call:
+      return type_call(expression, depth);
+    case ast::ExpressionKind::DirectAddress:
+      return ExprInfo{.type = types_.unknown(), .assignable = true};
+    default:
+      // Initializers, assignment expressions: their parts are still checked for names.
+      for (uint32_t i = 0; i < expression.named_child_count(); ++i) {
+        SyntaxNode child = expression.named_child(i);
+        if (child.kind() == "field_initializer") {
+          type_expression(child.child_by_field("value"), depth + 1);
+        } else {
+          type_expression(child, depth + 1);
+        }
+      }
+      return unknown;
+  }
+}
+
+const Type* BodyChecker::literal_type(const ConstValue& value, bool based) const {
+  // Untyped constants take the smallest type that holds them (CODESYS: 211 is USINT).
+  switch (value.kind) {
+    case ConstValue::Kind::Integer: {
+      const __int128 v = value.integer;
+      if (based) {
+        if (v <= 0xFF) return types_.elementary("BYTE");
+        if (v <= 0xFFFF) return types_.elementary("WORD");
+        if (v <= 0xFFFFFFFFll) return types_.elementary("DWORD");
+        return types_.elementary("LWORD");
+      }
+      if (v >= 0) {
+        if (v <= 255) return types_.elementary("USINT");
+        if (v <= 65535) return types_.elementary("UINT");
+        if (v <= 4294967295ll) return types_.elementary("UDINT");
+        return types_.elementary("ULINT");
+      }
+      if (v >= -128) return types_.elementary("SINT");
+      if (v >= -32768) return types_.elementary("INT");
+      if (v >= -2147483648ll) return types_.elementary("DINT");
+      return types_.elementary("LINT");
+    }
+    case ConstValue::Kind::Real:
+      return types_.elementary("REAL");  // adapts to LREAL where needed
+    case ConstValue::Kind::Bool:
+      return types_.elementary("BOOL");
+    case ConstValue::Kind::Duration:
+      return types_.elementary("TIME");
+    case ConstValue::Kind::String:
+      return types_.string_type(false, static_cast<uint32_t>(std::max<size_t>(1, value.text.size())));
+    case ConstValue::Kind::Date:
+      return types_.elementary("DATE");
+  }
+  return types_.unknown();
+}
+
+ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
+  const std::string_view kind = literal.kind();
+  ExprInfo info{.type = types_.unknown()};
+  if (kind == "date_literal" || kind == "time_of_day_literal" || kind == "date_and_time_literal") {
+    const std::string_view text = literal.text();
+    const bool long_variant = !text.empty() && (text[0] == 'L' || text[0] == 'l');
+    if (kind == "date_literal") info.type = types_.elementary(long_variant ? "LDATE" : "DATE");
+    if (kind == "time_of_day_literal") info.type = types_.elementary(long_variant ? "LTOD" : "TOD");
+    if (kind == "date_and_time_literal") info.type = types_.elementary(long_variant ? "LDT" : "DT");
+    return info;
+  }
+  if (kind == "time_literal") {
+    std::string problem;
+    auto value = parse_duration_literal(literal.text(), &problem);
+    const std::string_view text = literal.text();
+    info.type = types_.elementary(!text.empty() && (text[0] == 'L' || text[0] == 'l') ? "LTIME" : "TIME");
+    if (!value && !problem.empty()) {
+      report(codes::kLiteralOutOfRange, fmt::format("invalid duration '{}': {}", text, problem), literal.range(),
+             "write the units from the largest to the smallest, e.g. T#1d2h3m4s5ms");
+    } else if (value) {
+      info.value = ConstValue::of_duration(*value);
+    }
+    return info;
+  }
+  if (kind == "string_literal") {
+    bool wide = false;
+    auto text = parse_string_literal(literal.text(), &wide);
+    if (text) {
+      info.value = ConstValue{.kind = ConstValue::Kind::String, .text = *text};
+      info.type = types_.string_type(wide, static_cast<uint32_t>(std::max<size_t>(1, text->size())));
+    }
+    info.untyped_literal = true;
+    return info;
+  }
+  if (kind == "typed_literal") {
+    SyntaxNode type_node = literal.child_by_field("type");
+    SyntaxNode value_node = literal.child_by_field("value");
+    const Type* type = type_node ? types_.elementary(type_node.text()) : nullptr;
+    if (!type && type_node) {
+      // E_Color#Red: an enum value written with its type.
+      const Symbol* enum_type = model_.find_global(type_node.text());
+      if (enum_type && enum_type->kind == SymbolKind::DataType && value_node) {
+        const Symbol* value = model_.find_member(enum_type, value_node.text());
+        if (!value) {
+          report(codes::kUnknownMember, fmt::format("'{}' has no value '{}'", enum_type->name, value_node.text()),
+                 value_node.range());
+        }
+        return ExprInfo{.type = model_.type_of(enum_type), .symbol = value};
+      }
+      if (!enum_type && type_node) {
+        report(codes::kUnknownLibraryName, fmt::format("unknown type '{}'", type_node.text()), type_node.range());
+      }
+      return info;
+    }
+    info.type = type ? type : types_.unknown();
+    auto value = literal_value(literal);
+    if (value && type) {
+      // A typed literal must fit its type without loss (CODESYS: error, L4303-4305).
+      if (value->is_integer()) {
+        if (auto range = integer_range(type); range && (value->integer < range->lower || value->integer > range->upper)) {
+          report(codes::kLiteralOutOfRange,
+                 fmt::format("'{}' does not fit into {} ({}..{})", literal.text(), type->name,
+                             int128_to_string(range->lower), int128_to_string(range->upper)),
+                 literal.range(), "use a wider type");
+        } else if (type->kind == TypeKind::Bool && value->integer > 1) {
+          report(codes::kLiteralOutOfRange, fmt::format("'{}' is not a BOOL value", literal.text()), literal.range());
+        }
+      } else if (value->kind == ConstValue::Kind::Real && is_integer(type)) {
+        report(codes::kLiteralOutOfRange,
+               fmt::format("'{}' has a fraction: it does not fit into {} without loss", literal.text(), type->name),
+               literal.range(), fmt::format("write an integer, or use REAL_TO_{}()", type->name));
+      }
+      info.value = value;
+    }
+    return info;
+  }
+  auto value = literal_value(literal);
+  if (!value) {
+    if (kind == "integer_literal") {
+      report(codes::kLiteralOutOfRange, fmt::format("'{}' is too large for any integer type", literal.text()),
+             literal.range());
+    }
+    return info;
+  }
+  info.value = value;
+  info.untyped_literal = value->kind != ConstValue::Kind::Bool;
+  info.based_literal = kind == "integer_literal" && literal.text().find('#') != std::string_view::npos;
+  info.type = literal_type(*value, info.based_literal);
+  return info;
+}
+
+ExprInfo BodyChecker::info_for_symbol(const Symbol* symbol, SyntaxNode where) {
+  ExprInfo info{.type = types_.unknown(), .symbol = symbol};
+  if (symbol->has(kObsolete)) {
+    const Attribute* obsolete = symbol->attribute("obsolete");
+    report(codes::kObsolete,
+           fmt::format("'{}' is obsolete{}", symbol->name,
+                       obsolete && !obsolete->value.empty() ? ": " + obsolete->value : std::string()),
+           where.range());
+  }
+  switch (symbol->kind) {
+    case SymbolKind::Variable:
+      info.type = model_.type_of(symbol);
+      info.assignable = true;
+      return info;
+    case SymbolKind::EnumValue:
+      info.type = model_.type_of(symbol);
+      if (auto number = model_.enum_value(symbol)) info.value = ConstValue::of_integer(*number);
+      return info;
+    case SymbolKind::Function:
+    case SymbolKind::Method:
+    case SymbolKind::Property:
+      // Inside itself the POU's name is its result variable; a property reads through GET.
+      info.type = symbol->result_type ? symbol->result_type : types_.unknown();
+      info.assignable = true;
+      return info;
+    case SymbolKind::Program:
+      info.type = model_.type_of(symbol);  // the program's single instance
+      return info;
+    case SymbolKind::DataType:
+    case SymbolKind::FunctionBlock:
+    case SymbolKind::Interface:
+    case SymbolKind::Class:
+      info.type = model_.type_of(symbol);
+      info.names_type = true;
+      return info;
+    case SymbolKind::GlobalList:
+      info.names_namespace = true;
+      return info;
+    default:
+      return info;
+  }
+}
+
+ExprInfo BodyChecker::type_identifier(SyntaxNode identifier) {
+  const std::string_view name = identifier.text();
+  if (identifier.kind() == "qualified_name") {
+    return ExprInfo{.type = types_.unknown()};  // namespaces written as a.b.c in declarations
+  }
+  if (const Symbol* symbol = model_.lookup(&pou_, name)) return info_for_symbol(symbol, identifier);
+  if (model_.is_library_namespace(name)) return ExprInfo{.type = types_.unknown(), .names_namespace = true};
+  if (sfc_names_.contains(upper_name(name))) return ExprInfo{.type = types_.unknown(), .assignable = true};
+  if (const Builtin* builtin = find_builtin(name)) {
+    return ExprInfo{.type = builtin->value_type ? types_.elementary(builtin->value_type) : types_.unknown(),
+                    .names_namespace = builtin->is_namespace};
+  }
+  if (!model_.has_unresolved_base(&pou_)) report_undeclared(identifier);
+  return ExprInfo{.type = types_.unknown(), .assignable = true};
+}
+
+void BodyChecker::report_undeclared(SyntaxNode name) {
+  const std::vector<std::string_view> candidates = model_.visible_names(&pou_);
+  const std::string_view suggestion = closest_name(name.text(), candidates);
+  report(codes::kUndeclaredName, fmt::format("'{}' is not declared", name.text()), name.range(),
+         suggestion.empty() ? "declare it in a VAR section or a global variable list"
+                            : fmt::format("did you mean '{}'?", suggestion));
+}
+
+ExprInfo BodyChecker::type_member(SyntaxNode expression, int depth) {
+  SyntaxNode object_node = expression.child_by_field("object");
+  SyntaxNode member_node = expression.child_by_field("member");
+  ExprInfo object = type_expression(object_node, depth + 1);
+  // Members of something unknown stay unknown, and writable: one missing type, one diagnostic.
+  ExprInfo unknown{.type = types_.unknown(), .assignable = true};
+  if (!member_node) return unknown;
+  const std::string_view member = member_node.text();
+  // Bit access: w.3, and CODESYS constant bit numbers w.cBit.
+  if (member_node.kind() == "integer_literal") {
+    const Type* base = arithmetic_type(object.type);
+    if (!base->is_unknown() && is_any_int_or_bit(base)) {
+      auto bit = parse_integer_literal(member);
+      if (bit && base->bits && *bit >= base->bits) {
+        report(codes::kIndexOutOfRange, fmt::format("bit {} does not exist in {} ({} bits)", member, base->name, base->bits),
+               member_node.range());
+      }
+    } else if (!base->is_unknown() && base->kind != TypeKind::Bool) {
+      report(codes::kInvalidOperand, fmt::format("bit access on a value of type {}", object.type->name),
+             member_node.range());
+    }
+    return ExprInfo{.type = types_.elementary("BOOL"), .assignable = object.assignable || base->is_unknown()};
+  }
+  if (member_node.kind() == "direct_variable") return unknown;
+  if (object.names_namespace) {
+    // GVL.x, Library.F, __SYSTEM.X
+    const Symbol* qualifier = object.symbol;
+    if (qualifier && qualifier->kind == SymbolKind::GlobalList) {
+      if (const Symbol* found = model_.find_member(qualifier, member)) return info_for_symbol(found, member_node);
+      // Lists of the same name in other files (TwinCAT GVLs split in several objects).
+      if (const Symbol* variable = model_.find_global_variable(member)) return info_for_symbol(variable, member_node);
+      report(codes::kUnknownMember, fmt::format("global variable list '{}' has no variable '{}'", qualifier->name, member),
+             member_node.range());
+      return unknown;
+    }
+    if (object_node.kind() == "identifier" && model_.is_library_namespace(object_node.text())) {
+      if (const Symbol* found = model_.find_in_library(object_node.text(), member)) return info_for_symbol(found, member_node);
+    }
+    return unknown;
+  }
+  if (object.names_type) {
+    // E_Color.Red (enum values), FB_X.Constant (not IEC; tolerated as unknown)
+    const Symbol* type_symbol = object.symbol;
+    if (type_symbol && type_symbol->kind == SymbolKind::DataType) {
+      if (const Symbol* value = model_.find_member(type_symbol, member)) return info_for_symbol(value, member_node);
+      if (underlying(model_.type_of(type_symbol))->kind == TypeKind::Enum) {
+        report(codes::kUnknownMember, fmt::format("enum '{}' has no value '{}'", type_symbol->name, member),
+               member_node.range());
+      }
+    }
+    return unknown;
+  }
+  const Type* type = underlying(object.type);
+  if (type->kind == TypeKind::Reference && type->element) type = underlying(type->element);
+  if (type->is_unknown() || !type->declaration) return unknown;
+  if (type->kind == TypeKind::Pointer) return unknown;
+  const Symbol* container = type->declaration;
+  const Symbol* found = model_.find_member(container, member);
+  if (!found && model_.has_unresolved_base(container)) return unknown;
+  if (!found) {
+    std::vector<std::string_view> names;
+    for (const Symbol* c = container; c; c = c->base) {
+      for (const Symbol* m : c->ordered) names.push_back(m->name);
+      if (names.size() > 10000) break;
+    }
+    const std::string_view suggestion = closest_name(member, names);
+    report(codes::kUnknownMember, fmt::format("'{}' has no member '{}'", type->name, member), member_node.range(),
+           suggestion.empty() ? std::string() : fmt::format("did you mean '{}'?", suggestion));
+    return unknown;
+  }
+  ExprInfo info = info_for_symbol(found, member_node);
+  info.names_type = false;
+  if (found->kind == SymbolKind::Variable && container->kind != SymbolKind::DataType &&
+      found->section == ast::VarSection::Output && object.symbol != &pou_) {
+    info.read_only_output = true;  // fb.Q is written by the FB, read by the caller
+  }
+  if (found->kind == SymbolKind::Variable && container->kind != SymbolKind::DataType) {
+    const bool inside = container == &pou_ || container == pou_.owner;
+    if (!inside && (found->section == ast::VarSection::Var || found->section == ast::VarSection::Temp) &&
+        !found->has(kLibrary)) {
+      // CODESYS allows reading a program's or FB's local variables from outside (instance.local).
+      info.assignable = object.assignable || object.symbol;
+    }
+  }
+  return info;
+}
+
+ExprInfo BodyChecker::type_index(SyntaxNode expression, int depth) {
+  ExprInfo object = type_expression(expression.child_by_field("object"), depth + 1);
+  std::vector<SyntaxNode> indices = expression.children_by_field("index");
+  std::vector<ExprInfo> index_infos;
+  for (SyntaxNode index : indices) {
+    ExprInfo info = type_expression(index, depth + 1);
+    const Type* index_type = arithmetic_type(info.type);
+    if (!index_type->is_unknown() && !is_any_int_or_bit(index_type) && index_type->kind != TypeKind::Generic) {
+      report(codes::kTypeMismatch, fmt::format("an array index must be an integer, not {}", info.type->name),
+             index.range());
+    }
+    index_infos.push_back(std::move(info));
+  }
+  const Type* type = underlying(object.type);
+  if (type->kind == TypeKind::Reference && type->element) type = underlying(type->element);
+  ExprInfo result{.type = types_.unknown(), .assignable = object.assignable || type->is_unknown()};
+  if (type->is_unknown()) return result;
+  if (type->kind == TypeKind::String || type->kind == TypeKind::WString) {
+    result.type = types_.elementary(type->kind == TypeKind::String ? "BYTE" : "WORD");  // CODESYS s[i]: a character code
+    return result;
+  }
+  if (type->kind == TypeKind::Pointer) {
+    result.type = type->element ? type->element : types_.unknown();  // pointer indexing (TwinCAT)
+    return result;
+  }
+  if (type->kind != TypeKind::Array) {
+    report(codes::kWrongIndexCount, fmt::format("'{}' is not an array (type {})", expression.child_by_field("object").text(), object.type->name),
+           expression.range());
+    return result;
+  }
+  if (!type->dimensions.empty() && indices.size() != type->dimensions.size()) {
+    // a[i][j] on ARRAY[..,..] is a different shape: accept a prefix (array of arrays written flat).
+    if (indices.size() > type->dimensions.size()) {
+      report(codes::kWrongIndexCount,
+             fmt::format("{} has {} dimension(s), {} index(es) given", type->name, type->dimensions.size(), indices.size()),
+             expression.range());
+      return result;
+    }
+    if (indices.size() < type->dimensions.size()) {
+      report(codes::kWrongIndexCount,
+             fmt::format("{} has {} dimension(s), {} index(es) given", type->name, type->dimensions.size(), indices.size()),
+             expression.range());
+      return result;
+    }
+  }
+  for (size_t i = 0; i < indices.size() && i < type->dimensions.size(); ++i) {
+    const ArrayDimension& dimension = type->dimensions[i];
+    if (dimension.open || !dimension.known) continue;
+    auto value = model_.constant_value(indices[i], &pou_);
+    if (value && value->is_integer() && (value->integer < dimension.lower || value->integer > dimension.upper)) {
+      report(codes::kIndexOutOfRange,
+             fmt::format("index {} is outside the bounds {}..{}", int128_to_string(value->integer), dimension.lower,
+                         dimension.upper),
+             indices[i].range(), "valid indexes are the declared bounds, both included");
+    }
+  }
+  result.type = type->element ? type->element : types_.unknown();
+  return result;
+}
+
+ExprInfo BodyChecker::type_dereference(SyntaxNode expression, int depth) {
+  SyntaxNode operand = expression.child_by_field("operand");
+  // THIS^ and SUPER^: the instance itself and its base.
+  if (operand && operand.kind() == "identifier" && (names_equal(operand.text(), "THIS") || names_equal(operand.text(), "SUPER"))) {
+    const Symbol* block = &pou_;
+    while (block && block->kind != SymbolKind::FunctionBlock && block->kind != SymbolKind::Class) block = block->owner;
+    if (!block) {
+      report(codes::kInvalidThisSuper, fmt::format("{}^ is only valid inside a function block", operand.text()),
+             operand.range());
+      return ExprInfo{.type = types_.unknown()};
+    }
+    if (names_equal(operand.text(), "SUPER")) {
+      if (!block->base) {
+        if (block->base_nodes.empty()) {
+          report(codes::kInvalidThisSuper, fmt::format("SUPER^ in '{}', which extends nothing", block->name), operand.range());
+        }
+        return ExprInfo{.type = types_.unknown()};
+      }
+      return ExprInfo{.type = model_.type_of(block->base), .symbol = block->base, .assignable = true};
+    }
+    return ExprInfo{.type = model_.type_of(block), .symbol = block, .assignable = true};
+  }
+  ExprInfo inner = type_expression(operand, depth + 1);
+  const Type* type = underlying(inner.type);
+  if (type->is_unknown()) return ExprInfo{.type = types_.unknown(), .assignable = true};
+  if (type->kind == TypeKind::Pointer || type->kind == TypeKind::Reference) {
+    return ExprInfo{.type = type->element ? type->element : types_.unknown(), .assignable = true};
+  }
+  if (is_any_int_or_bit(type) && type->bits >= 32) {
+    return ExprInfo{.type = types_.unknown(), .assignable = true};  // an address held in a DWORD/__XWORD
+  }
+  report(codes::kInvalidDereference, fmt::format("'^' needs a POINTER or REFERENCE, not {}", inner.type->name),
+         expression.range());
+  return ExprInfo{.type = types_.unknown()};
+}
+
+ExprInfo BodyChecker::type_unary(SyntaxNode expression, int depth) {
+  ExprInfo operand = type_expression(expression.child_by_field("operand"), depth + 1);
+  const std::string op = ast::operator_of(expression);
+  ExprInfo result{.type = operand.type};
+  if (op == "-" && operand.value && operand.untyped_literal) {
+    // -5 is one literal: fold it so that it takes the smallest signed type.
+    ConstValue value = *operand.value;
+    if (value.kind == ConstValue::Kind::Integer || value.kind == ConstValue::Kind::Duration) value.integer = -value.integer;
+    if (value.kind == ConstValue::Kind::Real) value.real = -value.real;
+    result.value = value;
+    result.untyped_literal = true;
+    result.type = literal_type(value, false);
+    return result;
+  }
+  const Type* type = arithmetic_type(operand.type);
+  if (type->is_unknown() || type->kind == TypeKind::Generic) return result;
+  if (op == "NOT") {
+    if (type->kind != TypeKind::Bool && !is_any_int_or_bit(type)) {
+      report(codes::kInvalidOperand, fmt::format("NOT is not defined for {}", operand.type->name), expression.range());
+      result.type = types_.unknown();
+    }
+    if (operand.value && operand.value->kind == ConstValue::Kind::Bool) {
+      result.value = ConstValue::of_bool(operand.value->integer == 0);
+    }
+  } else if (op == "-" || op == "+") {
+    if (!is_numeric(type) && type->kind != TypeKind::Duration &&
+        !(type->kind == TypeKind::Bit && model_.profile().bits_and_integers_mix)) {
+      report(codes::kInvalidOperand, fmt::format("unary '{}' is not defined for {}", op, operand.type->name),
+             expression.range());
+      result.type = types_.unknown();
+    }
+  }
+  return result;
+}
+
+ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
+  SyntaxNode left_node = expression.child_by_field("left");
+  SyntaxNode right_node = expression.child_by_field("right");
+  ExprInfo left = type_expression(left_node, depth + 1);
+  ExprInfo right = type_expression(right_node, depth + 1);
+  const std::string op = ast::operator_of(expression);
+  ExprInfo result{.type = types_.unknown()};
+  // Fold literal-only arithmetic so that 2 * 1000 still counts as an untyped literal.
+  if (left.value && right.value && left.untyped_literal && right.untyped_literal && !is_comparison(op)) {
+    ConstEvaluator evaluator(nullptr);
+    if (auto value = evaluator.evaluate(expression)) {
+      result.value = value;
+      result.untyped_literal = true;
+      result.type = literal_type(*value, left.based_literal && right.based_literal);
+      return result;
+    }
+  }
+  if ((op == "/" || op == "MOD") && right.value && right.value->is_number() && right.value->as_real() == 0) {
+    report(codes::kDivisionByZero, fmt::format("division by zero ('{}' by a constant 0)", op), right_node.range());
+  } else if ((op == "/" || op == "MOD") && !right.value) {
+    auto constant = model_.constant_value(right_node, &pou_);
+    if (constant && constant->is_number() && constant->as_real() == 0) {
+      report(codes::kDivisionByZero, fmt::format("division by zero: '{}' is a constant 0", right_node.text()),
+             right_node.range());
+    }
+  }
+  const Type* a = arithmetic_type(left.type);
+  const Type* b = arithmetic_type(right.type);
+  const bool unknown = a->is_unknown() || b->is_unknown() || a->kind == TypeKind::Generic || b->kind == TypeKind::Generic;
+  if (is_comparison(op)) {
+    result.type = types_.elementary("BOOL");
+    if (!unknown) {
+      const bool comparable =
+          (is_numeric(a) || a->kind == TypeKind::Bit) == (is_numeric(b) || b->kind == TypeKind::Bit) ||
+          left.untyped_literal || right.untyped_literal;
+      const bool strings = is_string_like(a) != is_string_like(b);
+      if (!comparable || strings) {
+        if (convertibility(left.type, right.type, model_.profile()) == Convertibility::Never &&
+            convertibility(right.type, left.type, model_.profile()) == Convertibility::Never) {
+          report(codes::kInvalidOperand,
+                 fmt::format("cannot compare {} with {}", left.type->name, right.type->name), expression.range());
+        }
+      }
+    }
+    return result;
+  }
+  if (is_logical(op)) {
+    if (unknown) {
+      result.type = a->kind == TypeKind::Bool || b->kind == TypeKind::Bool ? types_.elementary("BOOL") : types_.unknown();
+      return result;
+    }
+    if (a->kind == TypeKind::Bool && b->kind == TypeKind::Bool) {
+      result.type = a;
+      return result;
+    }
+    const bool a_bits = is_any_int_or_bit(a), b_bits = is_any_int_or_bit(b);
+    if (a_bits && b_bits) {
+      result.type = left.untyped_literal ? b : (right.untyped_literal ? a : (a->bits >= b->bits ? a : b));
+      return result;
+    }
+    if ((a->kind == TypeKind::Bool && b_bits && right.untyped_literal) || (b->kind == TypeKind::Bool && a_bits && left.untyped_literal)) {
+      result.type = types_.elementary("BOOL");
+      return result;
+    }
+    if ((a->kind == TypeKind::Bool && b_bits) || (b->kind == TypeKind::Bool && a_bits)) {
+      result.type = a->kind == TypeKind::Bool ? b : a;  // CODESYS widens the BOOL; IEC rejects it
+      if (model_.profile().bits_and_integers_mix) return result;
+    }
+    report(codes::kInvalidOperand,
+           fmt::format("{} is not defined for {} and {}", op, left.type->name, right.type->name), expression.range(),
+           "use BOOL operands, or bit strings/integers of matching width");
+    result.type = types_.unknown();
+    return result;
+  }
+  // Arithmetic: + - * / MOD **
+  if (unknown) {
+    result.type = left.untyped_literal ? b : a;
+    return result;
+  }
+  const TypeKind ak = a->kind, bk = b->kind;
+  auto is_time_point = [](TypeKind k) { return k == TypeKind::Date || k == TypeKind::TimeOfDay || k == TypeKind::DateTime; };
+  if (ak == TypeKind::Duration || bk == TypeKind::Duration || is_time_point(ak) || is_time_point(bk)) {
+    if (ak == TypeKind::Duration && bk == TypeKind::Duration && (op == "+" || op == "-")) {
+      result.type = a->bits >= b->bits ? a : b;
+    } else if (ak == TypeKind::Duration && is_numeric(b) && (op == "*" || op == "/")) {
+      result.type = a;
+    } else if (bk == TypeKind::Duration && is_numeric(a) && op == "*") {
+      result.type = b;
+    } else if (is_time_point(ak) && bk == TypeKind::Duration && (op == "+" || op == "-")) {
+      result.type = a;
+    } else if (is_time_point(ak) && ak == bk && op == "-") {
+      result.type = types_.elementary("TIME");
+    } else if (model_.profile().time_and_integers_mix && (is_any_int_or_bit(a) || is_any_int_or_bit(b))) {
+      result.type = ak == TypeKind::Duration || is_time_point(ak) ? a : b;  // TIME + 100 in CODESYS: ms
+    } else if (ak == TypeKind::Duration && bk == TypeKind::Duration && op == "/") {
+      result.type = types_.elementary("DINT");
+    } else {
+      report(codes::kInvalidOperand,
+             fmt::format("'{}' is not defined for {} and {}", op, left.type->name, right.type->name), expression.range());
+    }
+    return result;
+  }
+  if (ak == TypeKind::Pointer || bk == TypeKind::Pointer) {
+    result.type = ak == TypeKind::Pointer ? a : b;  // CODESYS pointer arithmetic, in bytes
+    return result;
+  }
+  if (op == "MOD" && (ak == TypeKind::Real || bk == TypeKind::Real)) {
+    report(codes::kInvalidOperand, fmt::format("MOD needs integers, not {} and {}", left.type->name, right.type->name),
+           expression.range(), "use a - TRUNC(a / b) * b for REAL");
+    return result;
+  }
+  const bool a_num = is_numeric(a) || (ak == TypeKind::Bit && model_.profile().bits_and_integers_mix);
+  const bool b_num = is_numeric(b) || (bk == TypeKind::Bit && model_.profile().bits_and_integers_mix);
+  if (!a_num || !b_num) {
+    if ((ak == TypeKind::Bit || bk == TypeKind::Bit) && !is_string_like(a) && !is_string_like(b) && ak != TypeKind::Bool && bk != TypeKind::Bool) {
+      result.type = ak == TypeKind::Bit ? a : b;  // IEC: bit strings are not numbers, but let it pass once
+      return result;
+    }
+    report(codes::kInvalidOperand,
+           fmt::format("'{}' is not defined for {} and {}", op, left.type->name, right.type->name), expression.range(),
+           ak == TypeKind::Bool || bk == TypeKind::Bool ? "BOOL is not a number: use BOOL_TO_INT()" : std::string());
+    return result;
+  }
+  if (left.untyped_literal && !right.untyped_literal) {
+    result.type = (bk == TypeKind::Real || !(ak == TypeKind::Real)) ? b : common_numeric_type(a, b, types_);
+  } else if (right.untyped_literal && !left.untyped_literal) {
+    result.type = (ak == TypeKind::Real || !(bk == TypeKind::Real)) ? a : common_numeric_type(a, b, types_);
+  } else {
+    const Type* common = common_numeric_type(a, b, types_);
+    result.type = common ? common : a;
+  }
+  if (op == "**") result.type = types_.elementary(a->bits > 32 || b->bits > 32 ? "LREAL" : "REAL");
+  return result;
+}
+
+}  // namespace rung::check

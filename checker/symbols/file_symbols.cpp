@@ -1,0 +1,353 @@
+#include "checker/symbols/file_symbols.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "parser/diagnostic_codes.hpp"
+
+namespace rung::check {
+namespace {
+
+SymbolKind symbol_kind_of(ast::PouKind kind) {
+  switch (kind) {
+    case ast::PouKind::Program:
+      return SymbolKind::Program;
+    case ast::PouKind::Function:
+      return SymbolKind::Function;
+    case ast::PouKind::FunctionBlock:
+      return SymbolKind::FunctionBlock;
+    case ast::PouKind::Method:
+    case ast::PouKind::PropertyAccessor:
+      return SymbolKind::Method;
+    case ast::PouKind::Property:
+      return SymbolKind::Property;
+    case ast::PouKind::Interface:
+      return SymbolKind::Interface;
+    case ast::PouKind::Action:
+      return SymbolKind::Action;
+    case ast::PouKind::Transition:
+      return SymbolKind::Transition;
+    case ast::PouKind::Class:
+      return SymbolKind::Class;
+  }
+  return SymbolKind::Program;
+}
+
+uint32_t modifier_flags(const std::vector<std::string_view>& modifiers) {
+  uint32_t flags = 0;
+  for (std::string_view modifier : modifiers) {
+    if (names_equal(modifier, "ABSTRACT")) flags |= kAbstract;
+    if (names_equal(modifier, "FINAL")) flags |= kFinal;
+    if (names_equal(modifier, "PRIVATE")) flags |= kPrivate;
+    if (names_equal(modifier, "PROTECTED")) flags |= kProtected;
+    if (names_equal(modifier, "INTERNAL")) flags |= kInternal;
+    if (names_equal(modifier, "PUBLIC")) flags |= kPublic;
+    if (names_equal(modifier, "OVERRIDE")) flags |= kOverride;
+  }
+  return flags;
+}
+
+uint32_t attribute_flags(const std::vector<Attribute>& attributes) {
+  uint32_t flags = 0;
+  for (const auto& attribute : attributes) {
+    if (attribute.name == "qualified_only") flags |= kQualifiedOnly;
+    if (attribute.name == "hide" || attribute.name == "hide_all_locals") flags |= kHide;
+    if (attribute.name == "obsolete") flags |= kObsolete;
+    if (attribute.name == "rung.extensible") flags |= kExtensible;
+    if (attribute.name == "strict") flags |= kStrict;
+  }
+  return flags;
+}
+
+class Collector {
+ public:
+  Collector(FileSymbols& out, const Document& document, std::string_view gvl_name)
+      : out_(out), document_(document), gvl_name_(gvl_name) {}
+
+  void run(SyntaxNode root) {
+    const ast::Outline outline = ast::outline(root);
+    for (const ast::Pou& pou : outline.pous) out_.top_level.push_back(add_pou(pou, nullptr));
+    for (const ast::TypeDeclaration& type : outline.types) out_.top_level.push_back(add_type(type, nullptr));
+    for (const ast::VarBlock& block : outline.global_blocks) add_global_block(block);
+    for (SyntaxNode configuration : outline.configurations) {
+      Symbol& symbol = make(SymbolKind::Configuration, configuration.child_by_field("name"), configuration, nullptr);
+      out_.top_level.push_back(&symbol);
+      // VAR_GLOBAL of a configuration or resource: globals of the whole project (PLCopen, IEC).
+      std::vector<SyntaxNode> stack{configuration};
+      while (!stack.empty()) {
+        SyntaxNode node = stack.back();
+        stack.pop_back();
+        for (uint32_t i = 0; i < node.named_child_count(); ++i) {
+          SyntaxNode child = node.named_child(i);
+          if (child.kind() == "var_block") {
+            if (ast::VarBlock(child).section() == ast::VarSection::Global) add_global_block(ast::VarBlock(child));
+          } else if (child.kind() == "resource_declaration") {
+            stack.push_back(child);
+          }
+        }
+      }
+    }
+  }
+
+ private:
+  Symbol& make(SymbolKind kind, SyntaxNode name_node, SyntaxNode node, Symbol* owner) {
+    Symbol& symbol = out_.storage.emplace_back();
+    symbol.kind = kind;
+    symbol.source = out_.source;
+    symbol.node = node;
+    symbol.owner = owner;
+    if (name_node) {
+      symbol.name = name_node.text();
+      symbol.name_range = name_node.range();
+    } else {
+      symbol.name_range = {node.begin(), node.begin()};
+    }
+    if (out_.library) symbol.flags |= kLibrary;
+    return symbol;
+  }
+
+  // Adds `member` to `owner`'s scope; a second declaration of a name is E003 (first one wins).
+  void add_member(Symbol& owner, Symbol& member) {
+    owner.ordered.push_back(&member);
+    if (member.name.empty()) return;
+    auto [it, inserted] = owner.members.emplace(member.name, &member);
+    if (!inserted && !conditional_between(*it->second, member)) duplicate(member, *it->second);
+  }
+
+  // {IF defined(X)} a : INT; {ELSE} a : DINT; {END_IF}: two branches, one declaration each.
+  bool conditional_between(const Symbol& first, const Symbol& again) const {
+    const std::string& text = document_.tree()->text();
+    const uint32_t begin = std::min(first.name_range.end, again.name_range.begin);
+    const uint32_t end = std::max(first.name_range.end, again.name_range.begin);
+    for (size_t at = text.find('{', begin); at != std::string::npos && at < end; at = text.find('{', at + 1)) {
+      size_t i = at + 1;
+      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+      const std::string_view word = std::string_view(text).substr(i, 5);
+      if (names_equal(word.substr(0, 4), "ELSE") || names_equal(word.substr(0, 5), "ELSIF") ||
+          names_equal(word.substr(0, 3), "IF ")) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void duplicate(const Symbol& again, const Symbol& first) {
+    Diagnostic diagnostic;
+    diagnostic.code = std::string(codes::kDuplicateDeclaration);
+    diagnostic.severity = Severity::Error;
+    diagnostic.message = fmt::format("'{}' is declared twice in the same scope", again.name);
+    diagnostic.range = again.name_range;
+    diagnostic.labels.push_back({first.name_range, "first declared here"});
+    diagnostic.help = "rename or remove one of the declarations";
+    out_.diagnostics.push_back(std::move(diagnostic));
+  }
+
+  Symbol* add_pou(const ast::Pou& pou, Symbol* owner) {
+    SyntaxNode name = pou.name_node();
+    Symbol& symbol = make(symbol_kind_of(pou.kind()), name, pou.node(), owner);
+    if (pou.kind() == ast::PouKind::PropertyAccessor && !name) {
+      // GET / SET: named by their keyword
+      SyntaxNode keyword = pou.node().child(0);
+      symbol.name = keyword ? keyword.text() : std::string_view{};
+      symbol.name_range = keyword ? keyword.range() : TextRange{};
+    }
+    symbol.attributes = attributes_before(pou.node());
+    symbol.flags |= modifier_flags(pou.modifiers()) | attribute_flags(symbol.attributes);
+    symbol.type_node = pou.return_type();
+    symbol.base_nodes = pou.extends();
+    symbol.interface_nodes = pou.implements();
+    for (const ast::VarBlock& block : pou.var_blocks()) add_var_block(symbol, block);
+    for (const ast::Pou& member : pou.members()) {
+      Symbol* child = add_pou(member, &symbol);
+      add_member(symbol, *child);
+    }
+    // OpenPCS declares POU-local types among the variable blocks.
+    for (SyntaxNode type : pou.node().children_of_kind("type_declaration")) {
+      for (const ast::TypeDeclaration& declared : ast::outline(type).types) add_type(declared, nullptr);
+    }
+    return &symbol;
+  }
+
+  void add_var_block(Symbol& owner, const ast::VarBlock& block) {
+    const ast::VarSection section = block.section();
+    uint32_t flags = 0;
+    if (block.has_qualifier("CONSTANT")) flags |= kConstant;
+    if (block.has_qualifier("RETAIN")) flags |= kRetain;
+    if (block.has_qualifier("PERSISTENT")) flags |= kPersistent;
+    const std::vector<Attribute> block_attributes = attributes_before(block.node());
+    for (const ast::VarDeclaration& declaration : block.declarations()) {
+      add_variables(owner, declaration, section, flags, block_attributes);
+    }
+  }
+
+  void add_variables(Symbol& owner, const ast::VarDeclaration& declaration, ast::VarSection section, uint32_t flags,
+                     const std::vector<Attribute>& inherited) {
+    std::vector<Attribute> attributes = attributes_before(declaration.node());
+    for (const auto& attribute : inherited) {
+      if (attribute.name == "hide_all_locals") attributes.push_back(attribute);
+    }
+    for (SyntaxNode name : declaration.names()) {
+      Symbol& variable = make(SymbolKind::Variable, name, declaration.node(), &owner);
+      variable.section = section;
+      variable.type_node = declaration.type();
+      variable.location_node = declaration.location();
+      variable.attributes = attributes;
+      variable.flags |= flags | attribute_flags(attributes);
+      if (declaration.initial_value()) variable.flags |= kHasInitializer;
+      add_member(owner, variable);
+    }
+  }
+
+  Symbol* add_type(const ast::TypeDeclaration& type, Symbol* owner) {
+    Symbol& symbol = make(SymbolKind::DataType, type.node().child_by_field("name"), type.node(), owner);
+    // The attributes stand before TYPE, which holds this declaration.
+    SyntaxNode holder = type.node().parent();
+    symbol.attributes = attributes_before(holder && holder.kind() == "type_declaration" ? holder : type.node());
+    for (const auto& attribute : attributes_before(type.node())) symbol.attributes.push_back(attribute);
+    symbol.flags |= attribute_flags(symbol.attributes);
+    symbol.type_node = type.aliased_type();
+    if (SyntaxNode extends = type.node().first_child_of_kind("extends_clause")) {
+      symbol.base_nodes = extends.children_of_kind("type_name");
+    }
+    for (const ast::VarDeclaration& field : type.fields()) {
+      add_variables(symbol, field, ast::VarSection::Unknown, 0, {});
+    }
+    for (SyntaxNode value : type.enum_values()) {
+      Symbol& enumerator = make(SymbolKind::EnumValue, value.child_by_field("name"), value, &symbol);
+      add_member(symbol, enumerator);
+    }
+    return &symbol;
+  }
+
+  void add_global_block(const ast::VarBlock& block) {
+    const std::string_view list_name = global_list_name(block);
+    Symbol* list = nullptr;
+    for (Symbol* existing : out_.global_lists) {
+      if (names_equal(existing->name, list_name)) list = existing;
+    }
+    if (!list) {
+      list = &make(SymbolKind::GlobalList, SyntaxNode(), block.node(), nullptr);
+      list->name = list_name;
+      out_.global_lists.push_back(list);
+      out_.top_level.push_back(list);
+    }
+    const std::vector<Attribute> attributes = attributes_before(block.node());
+    list->attributes.insert(list->attributes.end(), attributes.begin(), attributes.end());
+    list->flags |= attribute_flags(attributes);
+    add_var_block(*list, block);
+  }
+
+  // TwinCAT and .EXP files name their lists; a plain file's lists are named after the file.
+  std::string_view global_list_name(const ast::VarBlock& block) const {
+    if (const containers::ContainerDocument* container = document_.container()) {
+      const uint32_t offset = document_.file_offset_of(block.node().begin());
+      const containers::ContainerObject* best = nullptr;
+      for (const auto& object : container->objects) {
+        if (object.file_offset <= offset && (object.kind == "GVL" || object.kind == "VAR_CONFIG")) best = &object;
+      }
+      if (best && !best->name.empty()) return best->name;
+    }
+    return gvl_name_;
+  }
+
+  FileSymbols& out_;
+  const Document& document_;
+  std::string_view gvl_name_;
+};
+
+uint64_t interface_hash(const Document& document, SyntaxNode root) {
+  // Every byte outside POU bodies, so that an edit inside a body keeps the hash.
+  std::vector<TextRange> bodies;
+  std::vector<SyntaxNode> stack{root};
+  while (!stack.empty()) {
+    SyntaxNode node = stack.back();
+    stack.pop_back();
+    for (uint32_t i = 0; i < node.named_child_count(); ++i) {
+      SyntaxNode child = node.named_child(i);
+      const std::string_view field = node.field_name_of_child(i);
+      (void)field;
+      const std::string_view kind = child.kind();
+      if (kind == "statement_list" || kind == "il_body" || kind == "sfc_network") {
+        bodies.push_back(child.range());
+      } else if (kind.ends_with("_declaration") || kind == "source_file" || kind == "property_accessor" ||
+                 kind == "namespace_declaration") {
+        stack.push_back(child);
+      }
+    }
+  }
+  std::sort(bodies.begin(), bodies.end(), [](TextRange a, TextRange b) { return a.begin < b.begin; });
+  const std::string& text = document.tree()->text();
+  uint64_t hash = 1469598103934665603ull;
+  uint32_t position = 0;
+  auto mix = [&](uint32_t end) {
+    for (; position < end && position < text.size(); ++position) {
+      hash ^= static_cast<unsigned char>(text[position]);
+      hash *= 1099511628211ull;
+    }
+  };
+  for (TextRange body : bodies) {
+    if (body.begin < position) continue;
+    mix(body.begin);
+    position = body.end;
+  }
+  mix(static_cast<uint32_t>(text.size()));
+  return hash;
+}
+
+}  // namespace
+
+std::optional<Attribute> parse_attribute_pragma(std::string_view text) {
+  // {attribute 'name'} or {attribute 'name' := 'value'}; spacing and quotes vary a little.
+  auto skip_space = [&](size_t i) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n')) ++i;
+    return i;
+  };
+  size_t i = skip_space(text.starts_with("{") ? 1 : 0);
+  if (text.size() - i < 9 || !names_equal(text.substr(i, 9), "attribute")) return std::nullopt;
+  i = skip_space(i + 9);
+  auto read_quoted = [&](size_t& at) -> std::optional<std::string> {
+    if (at >= text.size() || (text[at] != '\'' && text[at] != '"')) return std::nullopt;
+    const char quote = text[at];
+    const size_t close = text.find(quote, at + 1);
+    if (close == std::string_view::npos) return std::nullopt;
+    std::string value(text.substr(at + 1, close - at - 1));
+    at = close + 1;
+    return value;
+  };
+  std::optional<std::string> name = read_quoted(i);
+  if (!name) return std::nullopt;
+  Attribute attribute;
+  for (char c : *name) attribute.name += (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c;
+  i = skip_space(i);
+  if (text.substr(i, 2) == ":=") {
+    i = skip_space(i + 2);
+    if (auto value = read_quoted(i)) attribute.value = *value;
+  }
+  return attribute;
+}
+
+std::vector<Attribute> attributes_before(SyntaxNode node) {
+  std::vector<Attribute> attributes;
+  for (SyntaxNode sibling = node.prev_sibling(); sibling; sibling = sibling.prev_sibling()) {
+    const std::string_view kind = sibling.kind();
+    if (kind == "comment") continue;
+    if (kind != "pragma") break;
+    if (auto attribute = parse_attribute_pragma(sibling.text())) attributes.push_back(std::move(*attribute));
+  }
+  std::reverse(attributes.begin(), attributes.end());
+  return attributes;
+}
+
+FileSymbols collect_file_symbols(SourceId source, const Document& document, bool library, std::string_view gvl_name) {
+  FileSymbols out;
+  out.source = source;
+  out.library = library;
+  const SyntaxTree* tree = document.tree();
+  if (!tree || tree->aborted()) return out;
+  Collector(out, document, gvl_name).run(tree->root());
+  out.interface_hash = interface_hash(document, tree->root());
+  return out;
+}
+
+}  // namespace rung::check

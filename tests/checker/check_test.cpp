@@ -1,0 +1,126 @@
+// The semantic checker end to end: texts in, diagnostics out (codes and positions).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "checker/check.hpp"
+
+namespace rung::check {
+namespace {
+
+std::vector<std::string> codes_of(const std::vector<std::pair<std::string, std::string>>& files,
+                                  project::Profile profile = project::Profile::Codesys) {
+  project::ProjectConfig config;
+  config.profile = profile;
+  auto workspace = Workspace::from_texts(files, config);
+  std::vector<std::string> codes;
+  for (const auto& file : workspace->check_all(1)) {
+    for (const auto& diagnostic : file.diagnostics) codes.push_back(diagnostic.code);
+  }
+  return codes;
+}
+
+std::vector<std::string> codes_of(const std::string& text, project::Profile profile = project::Profile::Codesys) {
+  return codes_of({{"P.st", text}}, profile);
+}
+
+using Codes = std::vector<std::string>;
+
+TEST(Check, CleanProgramHasNoDiagnostics) {
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR a : INT; b : DINT; t : TON; END_VAR\n"
+                     "b := a + 1;\nt(IN := a > 3, PT := T#1s);\nIF t.Q THEN a := 0; END_IF\nEND_PROGRAM\n"),
+            Codes{});
+}
+
+TEST(Check, IntegerLiteralIntoBoolIsC0032) {
+  // 000a L4695-4711: bReady := 211 -> "Cannot convert type 'USINT' to type 'BOOL'"
+  project::ProjectConfig config;
+  auto workspace = Workspace::from_texts({{"P.st", "PROGRAM P\nVAR bReady : BOOL; END_VAR\nbReady := 211;\nEND_PROGRAM\n"}}, config);
+  auto results = workspace->check_all(1);
+  ASSERT_EQ(results.size(), 1u);
+  ASSERT_EQ(results[0].diagnostics.size(), 1u);
+  EXPECT_EQ(results[0].diagnostics[0].code, "E101");
+  EXPECT_EQ(results[0].diagnostics[0].message, "Cannot convert type 'USINT' to type 'BOOL'");
+}
+
+TEST(Check, SubrangeConstantOutOfRange) {
+  // 000a L6216-6225: nPosition : INT(0..90); nPosition := 99;
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR n : INT(0..90); END_VAR\nn := 99;\nn := 90;\nEND_PROGRAM\n"), Codes{"E102"});
+}
+
+TEST(Check, UndeclaredNameSuggestsTheCloseOne) {
+  project::ProjectConfig config;
+  auto workspace = Workspace::from_texts({{"P.st", "PROGRAM P\nVAR bStart : BOOL; END_VAR\nbStrat := TRUE;\nEND_PROGRAM\n"}}, config);
+  auto results = workspace->check_all(1);
+  ASSERT_EQ(results[0].diagnostics.size(), 1u);
+  EXPECT_EQ(results[0].diagnostics[0].code, "E001");
+  EXPECT_EQ(results[0].diagnostics[0].help, "did you mean 'bStart'?");
+}
+
+TEST(Check, NamesResolveAcrossFilesInAnyOrder) {
+  EXPECT_EQ(codes_of({{"A.st", "PROGRAM A\nVAR m : FB_M; END_VAR\nm(x := GVL.limit);\nEND_PROGRAM\n"},
+                      {"FB_M.st", "FUNCTION_BLOCK FB_M\nVAR_INPUT x : E_Mode; END_VAR\nEND_FUNCTION_BLOCK\n"},
+                      {"GVL.st", "VAR_GLOBAL CONSTANT limit : E_Mode := E_Mode.Fast; END_VAR\n"},
+                      {"E.st", "TYPE E_Mode : (Slow, Fast); END_TYPE\n"}}),
+            Codes{});
+}
+
+TEST(Check, UnknownTypeIsTheLibraryCode) {
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR f : FB_FromVendorLib; END_VAR\nf();\nEND_PROGRAM\n"), Codes{"E002"});
+}
+
+TEST(Check, StatementRules) {
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\nEXIT;\nEND_PROGRAM\n"), Codes{"E408"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\nCASE i OF 1: i := 2; 1: i := 3; END_CASE\nEND_PROGRAM\n"),
+            Codes{"E405"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\nIF i THEN i := 1; END_IF\nEND_PROGRAM\n"), Codes{"E103"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR CONSTANT c : INT := 1; END_VAR\nc := 2;\nEND_PROGRAM\n"), Codes{"E401"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\nFOR i := 1 TO 3 DO i := 2; END_FOR\nEND_PROGRAM\n"), Codes{"E407"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\ni := i / 0;\nEND_PROGRAM\n"), Codes{"E702"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR a : ARRAY[1..3] OF INT; END_VAR\na[4] := 1;\nEND_PROGRAM\n"), Codes{"E107"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR t : TON; END_VAR\nt.Q := TRUE;\nEND_PROGRAM\n"), Codes{"E402"});
+}
+
+TEST(Check, CallRules) {
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR t : TON; END_VAR\nt(IN := TRUE, PTT := T#1s);\nEND_PROGRAM\n"), Codes{"E301"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR t : TON; END_VAR\nt(Q := TRUE);\nEND_PROGRAM\n"), Codes{"E308"});
+  EXPECT_EQ(codes_of("PROGRAM P\nTON(IN := TRUE);\nEND_PROGRAM\n"), Codes{"E307"});
+}
+
+TEST(Check, NarrowingIsAWarningInCodesysAndAnErrorInIec) {
+  const std::string text = "PROGRAM P\nVAR i : INT; d : DINT; END_VAR\ni := d;\nEND_PROGRAM\n";
+  EXPECT_EQ(codes_of(text, project::Profile::Codesys), Codes{"E105"});
+  EXPECT_EQ(codes_of(text, project::Profile::Iec), Codes{"E101"});
+}
+
+TEST(Check, DeclarationRules) {
+  EXPECT_EQ(codes_of("FUNCTION F : INT\nVAR RETAIN r : INT; END_VAR\nF := r;\nEND_FUNCTION\n"), Codes{"E202"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR a : INT; a : BOOL; END_VAR\nEND_PROGRAM\n"), Codes{"E003"});
+  EXPECT_EQ(codes_of("INTERFACE I\nMETHOD M : BOOL\nEND_METHOD\nEND_INTERFACE\n"
+                     "FUNCTION_BLOCK FB IMPLEMENTS I\nEND_FUNCTION_BLOCK\n"),
+            Codes{"E204"});
+}
+
+TEST(Check, BrokenCodeGivesSyntaxErrorsAndNoCrash) {
+  const Codes codes = codes_of("PROGRAM P\nVAR a : INT END_VAR\na := := 3;\nIF a THEN\nEND_PROGRAM\n");
+  ASSERT_FALSE(codes.empty());
+  EXPECT_EQ(codes.front()[0], 'S');
+}
+
+TEST(Check, EditInABodyRechecksOnlyThatFile) {
+  project::ProjectConfig config;
+  auto workspace = Workspace::from_texts({{"A.st", "PROGRAM A\nVAR x : INT; END_VAR\nx := 1;\nEND_PROGRAM\n"},
+                                          {"B.st", "PROGRAM B\nVAR y : INT; END_VAR\ny := 2;\nEND_PROGRAM\n"}},
+                                         config);
+  auto changed = workspace->update(0, "PROGRAM A\nVAR x : INT; END_VAR\nx := z;\nEND_PROGRAM\n");
+  EXPECT_EQ(changed, std::vector<SourceId>{0});
+  EXPECT_EQ(workspace->check_source(0).diagnostics.size(), 1u);
+  // A declaration change re-checks every file.
+  changed = workspace->update(0, "PROGRAM A\nVAR x : INT; z : INT; END_VAR\nx := z;\nEND_PROGRAM\n");
+  EXPECT_EQ(changed.size(), 2u);
+  EXPECT_TRUE(workspace->check_source(0).diagnostics.empty());
+}
+
+}  // namespace
+}  // namespace rung::check
