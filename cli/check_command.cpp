@@ -104,6 +104,7 @@ int run_check_command(const CheckCommandOptions& options, std::FILE* out, std::F
   for (const auto& error : workspace->load_errors) fmt::print(err, "error: {}\n", error);
 
   std::vector<fs::path> scopes;
+  scopes.reserve(inputs.size());
   for (const auto& input : inputs) scopes.push_back(fs::absolute(input).lexically_normal());
   const std::vector<check::FileDiagnostics> results = workspace->check_all(options.threads);
   Tally tally;
