@@ -10,6 +10,8 @@ namespace {
 // CODESYS V3 / TwinCAT 3 operators and implicit objects (CODESYS online help "Operators";
 // TwinCAT "Implicit variables"). Result types only where they never depend on the arguments.
 constexpr std::array kBuiltins = {
+    // CODESYS 2.3 TIME(): milliseconds since the controller started (OSCAT uses it).
+    Builtin{"TIME", "TIME", false, true},
     Builtin{"__NEW", nullptr, false, true},
     Builtin{"__DELETE", nullptr, false, true},
     Builtin{"__ISVALIDREF", "BOOL", false, true},

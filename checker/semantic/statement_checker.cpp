@@ -4,6 +4,7 @@
 
 #include <map>
 
+#include "checker/constant/const_eval.hpp"
 #include "checker/semantic/body_checker.hpp"
 #include "parser/diagnostic_codes.hpp"
 
@@ -36,7 +37,11 @@ void BodyChecker::check() {
     for (uint32_t i = 0; i < body.named_child_count(); ++i) {
       SyntaxNode child = body.named_child(i);
       if (child.kind() == "sfc_transition") {
-        if (SyntaxNode condition = child.child_by_field("condition")) check_condition(condition);
+        // IEC transitions may be written ":= 1;" (MatIEC/Beremiz output): a BIT literal is a BOOL.
+        SyntaxNode condition = child.child_by_field("condition");
+        auto value = condition ? literal_value(condition) : std::nullopt;
+        const bool bit_literal = value && value->is_integer() && (value->integer == 0 || value->integer == 1);
+        if (condition && !bit_literal) check_condition(condition);
       } else if (child.kind() == "sfc_action_block") {
         if (SyntaxNode statements = child.child_by_field("body"); statements && statements.kind() == "statement_list") {
           collect_labels(statements);
