@@ -71,6 +71,14 @@ void Workspace::add_library_folder(const fs::path& folder, unsigned threads) {
   });
 }
 
+void Workspace::add_libraries(const LoadOptions& options, unsigned threads) {
+  if (options.standard_libraries) {
+    for (const fs::path& folder : default_library_folders(config_.profile)) add_library_folder(folder, threads);
+  }
+  for (const fs::path& folder : config_.libraries) add_library_folder(folder, threads);
+  model_->link();
+}
+
 std::unique_ptr<Workspace> Workspace::load_files(const std::vector<fs::path>& files, const project::ProjectConfig& config,
                                                  const LoadOptions& options) {
   std::unique_ptr<Workspace> workspace(new Workspace());
@@ -83,11 +91,7 @@ std::unique_ptr<Workspace> Workspace::load_files(const std::vector<fs::path>& fi
     }
     workspace->model_->add_source(std::make_unique<Document>(std::move(*loaded.document)));
   });
-  if (options.standard_libraries) {
-    for (const fs::path& folder : default_library_folders(config.profile)) workspace->add_library_folder(folder, options.threads);
-  }
-  for (const fs::path& folder : config.libraries) workspace->add_library_folder(folder, options.threads);
-  workspace->model_->link();
+  workspace->add_libraries(options, options.threads);
   return workspace;
 }
 
@@ -107,11 +111,7 @@ std::unique_ptr<Workspace> Workspace::from_texts(const std::vector<std::pair<std
   for (const auto& [path, text] : files) {
     workspace->model_->add_source(std::make_unique<Document>(Document::from_bytes(path, text)));
   }
-  if (options.standard_libraries) {
-    for (const fs::path& folder : default_library_folders(config.profile)) workspace->add_library_folder(folder, 1);
-  }
-  for (const fs::path& folder : config.libraries) workspace->add_library_folder(folder, 1);
-  workspace->model_->link();
+  workspace->add_libraries(options, 1);
   return workspace;
 }
 

@@ -58,6 +58,8 @@ class Workspace {
  private:
   Workspace() = default;
   void add_library_folder(const std::filesystem::path& folder, unsigned threads);
+  // The profile's standard stubs and rung.toml's libraries, then link().
+  void add_libraries(const LoadOptions& options, unsigned threads);
   std::unique_ptr<ProjectModel> model_;
   project::ProjectConfig config_;
 };

@@ -13,17 +13,6 @@ namespace {
 
 constexpr int kMaxInheritanceDepth = 32;  // cuts EXTENDS cycles (reported by the POU checks)
 
-Diagnostic make_diagnostic(std::string_view code, std::string message, TextRange range, std::string help = {}) {
-  Diagnostic diagnostic;
-  diagnostic.code = std::string(code);
-  const DiagnosticCodeInfo* info = find_diagnostic_code(code);
-  diagnostic.severity = info ? info->default_severity : Severity::Error;
-  diagnostic.message = std::move(message);
-  diagnostic.range = range;
-  diagnostic.help = std::move(help);
-  return diagnostic;
-}
-
 TypeKind named_kind_of(const Symbol& symbol) {
   if (symbol.kind != SymbolKind::DataType) return TypeKind::Pou;
   const std::string_view kind = symbol.node.kind();
@@ -189,6 +178,7 @@ void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagn
     case SymbolKind::Interface:
     case SymbolKind::Method:
     case SymbolKind::Property:
+    case SymbolKind::Action:
       if (!symbol.result_type) {
         symbol.result_type = symbol.type_node ? resolve_type(symbol.type_node, &symbol, &diagnostics) : types_->void_type();
       }
@@ -221,29 +211,19 @@ const Symbol* ProjectModel::resolve_type_symbol(SyntaxNode name, const Symbol* s
 
 const Type* ProjectModel::type_of(const Symbol* symbol) const {
   if (!symbol) return types_->unknown();
-  switch (symbol->kind) {
-    case SymbolKind::Variable:
-    case SymbolKind::EnumValue:
-      return symbol->type ? symbol->type : types_->unknown();
-    case SymbolKind::DataType:
-    case SymbolKind::Program:
-    case SymbolKind::Function:
-    case SymbolKind::FunctionBlock:
-    case SymbolKind::Class:
-    case SymbolKind::Interface:
-    case SymbolKind::Method:
-    case SymbolKind::Property:
-    case SymbolKind::Action: {
-      if (const Type* known = named_type_of(symbol)) return known;
-      auto* self = const_cast<ProjectModel*>(this);  // named types are created once per link
-      Type* type = self->types_->make_named(named_kind_of(*symbol), std::string(symbol->name), symbol);
-      if (type->kind == TypeKind::Pou) type->bits = 0;
-      self->named_types_.emplace(symbol, type);
-      return type;
-    }
-    default:
-      return types_->unknown();
+  if (symbol->kind == SymbolKind::Variable || symbol->kind == SymbolKind::EnumValue) {
+    return symbol->type ? symbol->type : types_->unknown();
   }
+  if (symbol->kind != SymbolKind::DataType && (!is_pou_kind(symbol->kind) || symbol->kind == SymbolKind::Transition)) {
+    return types_->unknown();
+  }
+  if (const Type* known = named_type_of(symbol)) return known;
+  // Named types are created here during link() (resolve_symbol visits every data type and POU),
+  // never later, so the parallel body checks only read named_types_.
+  auto* self = const_cast<ProjectModel*>(this);
+  Type* type = self->types_->make_named(named_kind_of(*symbol), std::string(symbol->name), symbol);
+  self->named_types_.emplace(symbol, type);
+  return type;
 }
 
 const Type* ProjectModel::resolve_type(SyntaxNode spec, const Symbol* scope, std::vector<Diagnostic>* diagnostics) {
@@ -331,7 +311,7 @@ const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope
     if (diagnostics) {
       diagnostics->push_back(make_diagnostic(
           codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text), name.range(),
-          "if it comes from a vendor library, add that library's declarations as stubs (rung.toml [libraries])"));
+          "if it comes from a vendor library, add that library's declarations as stubs (the 'libraries' list under [project] in rung.toml)"));
     }
     return types_->unknown();
   }
@@ -357,7 +337,7 @@ const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope
     diagnostics->push_back(make_diagnostic(
         codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text), name.range(),
         suggestion.empty()
-            ? "declare it, or if it comes from a vendor library, add that library's stubs (rung.toml [libraries])"
+            ? "declare it, or if it comes from a vendor library, add that library's stubs (the 'libraries' list under [project] in rung.toml)"
             : fmt::format("did you mean '{}'?", suggestion)));
   }
   return types_->unknown();

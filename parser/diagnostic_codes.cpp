@@ -1,6 +1,8 @@
 #include "parser/diagnostic_codes.hpp"
 
 #include <array>
+#include <string>
+#include <utility>
 
 namespace rung {
 namespace {
@@ -174,6 +176,19 @@ constexpr std::array kCodes = {
 
 std::span<const DiagnosticCodeInfo> all_diagnostic_codes() {
   return kCodes;
+}
+
+Diagnostic make_diagnostic(std::string_view code, std::string message, TextRange range, std::string help,
+                           std::vector<DiagnosticLabel> labels) {
+  Diagnostic diagnostic;
+  diagnostic.code = std::string(code);
+  const DiagnosticCodeInfo* info = find_diagnostic_code(code);
+  diagnostic.severity = info ? info->default_severity : Severity::Error;
+  diagnostic.message = std::move(message);
+  diagnostic.range = range;
+  diagnostic.help = std::move(help);
+  diagnostic.labels = std::move(labels);
+  return diagnostic;
 }
 
 const DiagnosticCodeInfo* find_diagnostic_code(std::string_view code) {

@@ -5,6 +5,7 @@
 
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "parser/diagnostic.hpp"
 
@@ -19,6 +20,10 @@ struct DiagnosticCodeInfo {
 
 std::span<const DiagnosticCodeInfo> all_diagnostic_codes();
 const DiagnosticCodeInfo* find_diagnostic_code(std::string_view code);
+
+// A diagnostic of a registered code, with the code's default severity.
+Diagnostic make_diagnostic(std::string_view code, std::string message, TextRange range, std::string help = {},
+                           std::vector<DiagnosticLabel> labels = {});
 
 namespace codes {
 inline constexpr std::string_view kSyntaxError = "S001";

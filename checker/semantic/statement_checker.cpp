@@ -14,15 +14,7 @@ BodyChecker::BodyChecker(const ProjectModel& model, const Symbol& pou, std::vect
 
 void BodyChecker::report(std::string_view code, std::string message, TextRange range, std::string help,
                          std::vector<DiagnosticLabel> labels) {
-  Diagnostic diagnostic;
-  diagnostic.code = std::string(code);
-  const DiagnosticCodeInfo* info = find_diagnostic_code(code);
-  diagnostic.severity = info ? info->default_severity : Severity::Error;
-  diagnostic.message = std::move(message);
-  diagnostic.range = range;
-  diagnostic.help = std::move(help);
-  diagnostic.labels = std::move(labels);
-  out_.push_back(std::move(diagnostic));
+  out_.push_back(make_diagnostic(code, std::move(message), range, std::move(help), std::move(labels)));
 }
 
 void BodyChecker::check() {

@@ -133,14 +133,10 @@ class Collector {
   }
 
   void duplicate(const Symbol& again, const Symbol& first) {
-    Diagnostic diagnostic;
-    diagnostic.code = std::string(codes::kDuplicateDeclaration);
-    diagnostic.severity = Severity::Error;
-    diagnostic.message = fmt::format("'{}' is declared twice in the same scope", again.name);
-    diagnostic.range = again.name_range;
-    diagnostic.labels.push_back({first.name_range, "first declared here"});
-    diagnostic.help = "rename or remove one of the declarations";
-    out_.diagnostics.push_back(std::move(diagnostic));
+    out_.diagnostics.push_back(make_diagnostic(codes::kDuplicateDeclaration,
+                                               fmt::format("'{}' is declared twice in the same scope", again.name),
+                                               again.name_range, "rename or remove one of the declarations",
+                                               {{first.name_range, "first declared here"}}));
   }
 
   Symbol* add_pou(const ast::Pou& pou, Symbol* owner) {
@@ -265,8 +261,6 @@ uint64_t interface_hash(const Document& document, SyntaxNode root) {
     stack.pop_back();
     for (uint32_t i = 0; i < node.named_child_count(); ++i) {
       SyntaxNode child = node.named_child(i);
-      const std::string_view field = node.field_name_of_child(i);
-      (void)field;
       const std::string_view kind = child.kind();
       if (kind == "statement_list" || kind == "il_body" || kind == "sfc_network") {
         bodies.push_back(child.range());

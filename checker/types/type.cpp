@@ -330,22 +330,16 @@ const Type* TypeArena::array_of(const Type* element, std::vector<ArrayDimension>
   return type;
 }
 
-const Type* TypeArena::pointer_to(const Type* target) {
-  std::lock_guard lock(mutex_);
-  auto key = std::make_tuple(2, target, 0u);
-  if (auto found = strings_pointers_.find(key); found != strings_pointers_.end()) return found->second;
-  const Type* type =
-      add(Type{.kind = TypeKind::Pointer, .name = "POINTER TO " + target->name, .bits = 64, .element = target});
-  strings_pointers_.emplace(key, type);
-  return type;
-}
+const Type* TypeArena::pointer_to(const Type* target) { return indirection(TypeKind::Pointer, target); }
 
-const Type* TypeArena::reference_to(const Type* target) {
+const Type* TypeArena::reference_to(const Type* target) { return indirection(TypeKind::Reference, target); }
+
+const Type* TypeArena::indirection(TypeKind kind, const Type* target) {
   std::lock_guard lock(mutex_);
-  auto key = std::make_tuple(3, target, 0u);
+  auto key = std::make_tuple(kind == TypeKind::Pointer ? 2 : 3, target, 0u);
   if (auto found = strings_pointers_.find(key); found != strings_pointers_.end()) return found->second;
-  const Type* type =
-      add(Type{.kind = TypeKind::Reference, .name = "REFERENCE TO " + target->name, .bits = 64, .element = target});
+  const std::string prefix = kind == TypeKind::Pointer ? "POINTER TO " : "REFERENCE TO ";
+  const Type* type = add(Type{.kind = kind, .name = prefix + target->name, .bits = 64, .element = target});
   strings_pointers_.emplace(key, type);
   return type;
 }

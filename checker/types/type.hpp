@@ -145,6 +145,7 @@ class TypeArena {
 
  private:
   const Type* add(Type type);
+  const Type* indirection(TypeKind kind, const Type* target);  // POINTER TO / REFERENCE TO
 
   std::deque<Type> storage_;
   std::map<std::string, const Type*> elementary_;  // upper-case names
