@@ -69,7 +69,7 @@ ExprInfo BodyChecker::type_call(SyntaxNode call, int depth) {
       const std::string_view suggestion = closest_name(name, candidates);
       report(codes::kUnknownLibraryName, fmt::format("unknown function or function block '{}'", name), function.range(),
              suggestion.empty()
-                 ? "declare it, or if it comes from a vendor library, add that library's stubs (rung.toml [libraries])"
+                 ? "declare it, or if it comes from a vendor library, add that library's stubs (the 'libraries' list under [project] in rung.toml)"
                  : fmt::format("did you mean '{}'?", suggestion));
       return unknown;
     }

@@ -193,7 +193,7 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
 
 ExprInfo BodyChecker::info_for_symbol(const Symbol* symbol, SyntaxNode where) {
   ExprInfo info{.type = types_.unknown(), .symbol = symbol};
-  if (symbol->has(kObsolete)) {
+  if (symbol->has(kObsolete) && !inside(*symbol)) {
     const Attribute* obsolete = symbol->attribute("obsolete");
     report(codes::kObsolete,
            fmt::format("'{}' is obsolete{}", symbol->name,
@@ -319,9 +319,9 @@ ExprInfo BodyChecker::type_member(SyntaxNode expression, int depth) {
   if (!found && model_.has_unresolved_base(container)) return unknown;
   if (!found) {
     std::vector<std::string_view> names;
-    for (const Symbol* c = container; c; c = c->base) {
+    int depth = 0;
+    for (const Symbol* c = container; c && depth < 32; c = c->base, ++depth) {  // bounded: EXTENDS may cycle
       for (const Symbol* m : c->ordered) names.push_back(m->name);
-      if (names.size() > 10000) break;
     }
     const std::string_view suggestion = closest_name(member, names);
     report(codes::kUnknownMember, fmt::format("'{}' has no member '{}'", type->name, member), member_node.range(),

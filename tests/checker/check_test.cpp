@@ -102,6 +102,12 @@ TEST(Check, DeclarationRules) {
             Codes{"E204"});
 }
 
+TEST(Check, ObsoleteWarnsAtUseButNotInsideItself) {
+  EXPECT_EQ(codes_of("{attribute 'obsolete' := 'use F2'}\nFUNCTION F : INT\nF := 1;\nEND_FUNCTION\n"
+                     "PROGRAM P\nVAR i : INT; END_VAR\ni := F();\nEND_PROGRAM\n"),
+            Codes{"E601"});
+}
+
 TEST(Check, BrokenCodeGivesSyntaxErrorsAndNoCrash) {
   const Codes codes = codes_of("PROGRAM P\nVAR a : INT END_VAR\na := := 3;\nIF a THEN\nEND_PROGRAM\n");
   ASSERT_FALSE(codes.empty());
