@@ -16,6 +16,13 @@ Profile make_profile(project::Profile id) {
       profile.bit_literals_to_bool = false;
       profile.time_and_integers_mix = false;
       break;
+    case project::Profile::Openpcs:
+      // OpenPCS (infoteam) follows IEC 61131-3 2nd edition strictly and, unlike CODESYS, gives a
+      // PROGRAM no parameters (OpenPCS manual: VAR_INPUT/VAR_OUTPUT only in FUNCTION_BLOCK).
+      profile = make_profile(project::Profile::Iec);
+      profile.id = id;
+      profile.program_parameters = false;
+      break;
   }
   return profile;
 }

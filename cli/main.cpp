@@ -60,7 +60,7 @@ int run(int argc, char** argv) {
   check->add_option("--format", check_format, "Output format (sarif: SARIF 2.1.0 for code scanning)")
       ->check(CLI::IsMember({"human", "json", "sarif"}));
   check->add_option("--profile", check_profile, "Semantics profile, overrides rung.toml")
-      ->check(CLI::IsMember({"codesys", "iec", "twincat"}));
+      ->check(CLI::IsMember({"codesys", "iec", "twincat", "openpcs"}));
   check->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
   check->add_flag("-q,--quiet", check_options.quiet, "Do not print the closing summary line");
   check->add_option("-j,--jobs", check_options.threads, "Threads (default: one per core)");

@@ -201,6 +201,7 @@ std::string_view profile_name(Profile profile) {
     case Profile::Codesys: return "codesys";
     case Profile::Iec: return "iec";
     case Profile::Twincat: return "twincat";
+    case Profile::Openpcs: return "openpcs";
   }
   return "codesys";
 }
@@ -211,6 +212,7 @@ std::optional<Profile> parse_profile(std::string_view name) {
   if (n == "codesys") return Profile::Codesys;
   if (n == "iec") return Profile::Iec;
   if (n == "twincat") return Profile::Twincat;
+  if (n == "openpcs") return Profile::Openpcs;
   return std::nullopt;
 }
 

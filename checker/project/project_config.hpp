@@ -17,7 +17,7 @@ namespace rung::project {
 
 // Where vendors disagree (REAL_TO_INT ties, short-circuit AND, TON boundary, ...), the profile
 // picks one behaviour; checker and runner read the same table.
-enum class Profile { Codesys, Iec, Twincat };
+enum class Profile { Codesys, Iec, Twincat, Openpcs };
 std::string_view profile_name(Profile profile);
 std::optional<Profile> parse_profile(std::string_view name);
 

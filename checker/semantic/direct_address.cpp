@@ -6,6 +6,8 @@
 #include <tuple>
 #include <variant>
 
+#include <fmt/format.h>
+
 namespace rung::check {
 namespace {
 
@@ -107,8 +109,9 @@ uint64_t unit_bytes(AddressSize size) {
 DirectAddressResult unknown_area(std::string_view text) {
   bool rest_is_number = text.size() > 2 && std::all_of(text.begin() + 2, text.end(), is_digit);
   if (size_of(text[1]) && rest_is_number) {
-    return fail(1, "'" + excerpt(text) + "' is a bit/byte access of a variable (x." + excerpt(text) +
-                       "), not a direct address: an address needs an area I, Q or M");
+    return fail(1, fmt::format("'{0}' is a bit/byte access of a variable (x.{0}), not a direct address: an address "
+                               "needs an area I, Q or M",
+                               excerpt(text)));
   }
   if (!is_printable(text[1])) return fail(1, kAreaExpected);
   return fail(1, describe(text[1]) + " is not an address area: use I (input), Q (output) or M (memory)");
@@ -131,7 +134,7 @@ std::variant<Fields, DirectAddressResult> read_fields(std::string_view text, siz
       ++pos;
     }
     if (pos == start) {
-      if (fields.numbers.empty()) return fail(start, "'" + excerpt(text.substr(0, start)) + "' has no address number");
+      if (fields.numbers.empty()) return fail(start, fmt::format("'{}' has no address number", excerpt(text.substr(0, start))));
       return fail(start, "'.' in a direct address must be followed by a number");
     }
     if (value > kMaxField) {
