@@ -1,74 +1,71 @@
 #include "bench/generated_source.hpp"
 
-#include <random>
-
 namespace rung::bench {
+
+void write_mixed_statement_variables(LineWriter& out) {
+  out.line("VAR_INPUT");
+  out.line("    bEnable : BOOL;          // enables the block");
+  out.line("    rSetpoint : REAL := 12.5;");
+  out.line("    tDelay : TIME := T#250MS;");
+  out.line("END_VAR");
+  out.line("VAR_OUTPUT");
+  out.line("    bDone : BOOL;");
+  out.line("    iState : INT;");
+  out.line("END_VAR");
+  out.line("VAR");
+  out.line("    aBuffer : ARRAY[0..15] OF INT;");
+  out.line("    tonDelay : TON;");
+  out.line("    i : INT;");
+  out.line("    rSum : REAL;");
+  out.line("END_VAR");
+}
+
+void write_mixed_statement(LineWriter& out, std::mt19937& rng) {
+  switch (rng() % 5) {
+    case 0:
+      out.line("IF bEnable AND (iState < " + std::to_string(rng() % 100) + ") THEN");
+      out.line("    iState := iState + 1;");
+      out.line("ELSIF NOT bEnable THEN");
+      out.line("    iState := 0; (* reset *)");
+      out.line("END_IF");
+      break;
+    case 1:
+      out.line("CASE iState OF");
+      out.line("    0: bDone := FALSE;");
+      out.line("    1..5: rSum := rSum + rSetpoint * 2.0;");
+      out.line("ELSE");
+      out.line("    bDone := TRUE;");
+      out.line("END_CASE");
+      break;
+    case 2:
+      out.line("FOR i := 0 TO 15 BY 1 DO");
+      out.line("    aBuffer[i] := aBuffer[i] + i MOD 3;");
+      out.line("END_FOR");
+      break;
+    case 3:
+      out.line("tonDelay(IN := bEnable, PT := tDelay);");
+      out.line("bDone := tonDelay.Q OR (rSum > 100.0);");
+      break;
+    default:
+      out.line("rSum := LIMIT(0.0, rSum + INT_TO_REAL(aBuffer[" + std::to_string(rng() % 16) + "]), 1000.0);");
+      break;
+  }
+}
 
 std::string generate_st(size_t lines, unsigned seed) {
   std::mt19937 rng(seed);
-  std::string out;
-  size_t emitted = 0;
+  LineWriter out;
   size_t pou = 0;
-  auto line = [&](const std::string& s) {
-    out += s;
-    out += '\n';
-    ++emitted;
-  };
-  while (emitted < lines) {
-    std::string name = "FB_Generated" + std::to_string(pou++);
-    line("{attribute 'reflection'}");
-    line("FUNCTION_BLOCK " + name);
-    line("VAR_INPUT");
-    line("    bEnable : BOOL;          // enables the block");
-    line("    rSetpoint : REAL := 12.5;");
-    line("    tDelay : TIME := T#250MS;");
-    line("END_VAR");
-    line("VAR_OUTPUT");
-    line("    bDone : BOOL;");
-    line("    iState : INT;");
-    line("END_VAR");
-    line("VAR");
-    line("    aBuffer : ARRAY[0..15] OF INT;");
-    line("    tonDelay : TON;");
-    line("    i : INT;");
-    line("    rSum : REAL;");
-    line("END_VAR");
-    size_t body = 20 + rng() % 40;
-    for (size_t s = 0; s < body; ++s) {
-      switch (rng() % 5) {
-        case 0:
-          line("IF bEnable AND (iState < " + std::to_string(rng() % 100) + ") THEN");
-          line("    iState := iState + 1;");
-          line("ELSIF NOT bEnable THEN");
-          line("    iState := 0; (* reset *)");
-          line("END_IF");
-          break;
-        case 1:
-          line("CASE iState OF");
-          line("    0: bDone := FALSE;");
-          line("    1..5: rSum := rSum + rSetpoint * 2.0;");
-          line("ELSE");
-          line("    bDone := TRUE;");
-          line("END_CASE");
-          break;
-        case 2:
-          line("FOR i := 0 TO 15 BY 1 DO");
-          line("    aBuffer[i] := aBuffer[i] + i MOD 3;");
-          line("END_FOR");
-          break;
-        case 3:
-          line("tonDelay(IN := bEnable, PT := tDelay);");
-          line("bDone := tonDelay.Q OR (rSum > 100.0);");
-          break;
-        default:
-          line("rSum := LIMIT(0.0, rSum + INT_TO_REAL(aBuffer[" + std::to_string(rng() % 16) + "]), 1000.0);");
-          break;
-      }
-    }
-    line("END_FUNCTION_BLOCK");
-    line("");
+  while (out.lines() < lines) {
+    out.line("{attribute 'reflection'}");
+    out.line("FUNCTION_BLOCK FB_Generated" + std::to_string(pou++));
+    write_mixed_statement_variables(out);
+    const size_t body = 20 + rng() % 40;
+    for (size_t s = 0; s < body; ++s) write_mixed_statement(out, rng);
+    out.line("END_FUNCTION_BLOCK");
+    out.line("");
   }
-  return out;
+  return out.take();
 }
 
 }  // namespace rung::bench

@@ -5,8 +5,11 @@
 #include <cstdlib>
 #include <thread>
 
+#include "checker/conditional_sources.hpp"
 #include "checker/semantic/body_checker.hpp"
 #include "checker/semantic/declaration_checker.hpp"
+#include "checker/semantic/pragma_checker.hpp"
+#include "checker/semantic/recursion_checker.hpp"
 #include "parser/file_walk.hpp"
 #include "parser/parallel_load.hpp"
 
@@ -28,6 +31,7 @@ std::vector<fs::path> default_library_folders(project::Profile profile) {
   if (profile == project::Profile::Codesys || profile == project::Profile::Twincat) {
     for (const char* name : {"Operators", "Standard", "Standard64", "Util"}) folders.push_back(root / "codesys" / name);
   }
+  if (profile == project::Profile::Openpcs) folders.push_back(root / "openpcs" / "System");
   return folders;
 }
 
@@ -92,6 +96,7 @@ std::unique_ptr<Workspace> Workspace::load_files(const std::vector<fs::path>& fi
     workspace->model_->add_source(std::make_unique<Document>(std::move(*loaded.document)));
   });
   workspace->add_libraries(options, options.threads);
+  compile_conditionally(*workspace->model_);  // blanks inactive {IF} branches, links again
   return workspace;
 }
 
@@ -112,6 +117,7 @@ std::unique_ptr<Workspace> Workspace::from_texts(const std::vector<std::pair<std
     workspace->model_->add_source(std::make_unique<Document>(Document::from_bytes(path, text)));
   }
   workspace->add_libraries(options, 1);
+  compile_conditionally(*workspace->model_);
   return workspace;
 }
 
@@ -128,6 +134,8 @@ FileDiagnostics Workspace::check_source(SourceId id) const {
     for (const Symbol* pou : pous) BodyChecker(*model_, *pou, semantic).check();
   }
   check_declarations(*model_, id, semantic);
+  check_recursion(*model_, id, semantic);
+  check_pragmas(*model_, id, semantic);
   // Semantic findings are in tree coordinates; syntax diagnostics already in file coordinates.
   const Document& document = *source.document;
   for (Diagnostic& diagnostic : semantic) {
@@ -167,9 +175,13 @@ std::vector<FileDiagnostics> Workspace::check_all(unsigned threads) const {
 std::vector<SourceId> Workspace::update(SourceId id, std::string text) {
   const std::string path = model_->source(id).document->path();
   auto document = std::make_unique<Document>(Document::from_bytes(path, text));
+  // A body edit re-links only this file (incremental_link.cpp); anything else links the project.
   const bool interface_changed = model_->update_source(id, std::move(document));
-  model_->link();  // a full link for now; linking only the changed file is the next step
-  if (!interface_changed) return {id};
+  if (interface_changed) model_->link();
+  const std::vector<SourceId> rewritten = compile_conditionally(*model_);
+  const bool others_rewritten =
+      std::any_of(rewritten.begin(), rewritten.end(), [&](SourceId other) { return other != id; });
+  if (!interface_changed && !others_rewritten) return {id};
   std::vector<SourceId> all;
   for (SourceId other = 0; other < model_->source_count(); ++other) {
     if (!model_->source(other).library) all.push_back(other);

@@ -7,14 +7,29 @@ Profile make_profile(project::Profile id) {
   profile.id = id;
   switch (id) {
     case project::Profile::Codesys:
+      break;  // the defaults are CODESYS V3 behaviour
     case project::Profile::Twincat:
-      break;  // the defaults are CODESYS V3 behaviour; TwinCAT 3 is CODESYS V3 underneath
+      // TwinCAT 3 is CODESYS V3 underneath; its task priorities are not CODESYS's 0..31 and no
+      // manual rung follows gives their range.
+      profile.max_task_priority = 0;
+      break;
     case project::Profile::Iec:
       profile.narrowing_is_error = true;
       profile.bits_and_integers_mix = false;
       profile.enums_are_integers = false;
       profile.bit_literals_to_bool = false;
       profile.time_and_integers_mix = false;
+      profile.address_size_mismatch_is_error = true;
+      profile.freewheeling_tasks = false;
+      profile.max_task_priority = 0;
+      profile.program_globals = true;
+      profile.located_retain = true;
+      profile.external_initial_values = false;
+      profile.retain_in_functions_is_error = true;
+      profile.located_block_locals_are_error = true;
+      profile.constant_parameters = false;
+      profile.instances_in_functions = false;
+      profile.generic_parameters = false;
       break;
     case project::Profile::Openpcs:
       // OpenPCS (infoteam) follows IEC 61131-3 2nd edition strictly and, unlike CODESYS, gives a
@@ -22,6 +37,27 @@ Profile make_profile(project::Profile id) {
       profile = make_profile(project::Profile::Iec);
       profile.id = id;
       profile.program_parameters = false;
+      profile.generic_arguments_widen = false;
+      profile.call_input_instances = false;
+      // `%QW1.0` is the output word starting at the second output byte (OpenPCS manual L7091).
+      profile.addressing = AddressingMode::ByteOffset;
+      profile.compound_types_at_addresses = false;
+      profile.located_retain = false;
+      profile.located_initial_values = false;
+      profile.located_constants = false;
+      profile.constant_externals = false;
+      profile.retain_inputs = false;
+      profile.qualified_instances = false;
+      profile.instances_in_data = false;
+      profile.function_outputs_and_externals = false;
+      profile.function_needs_input = true;
+      profile.function_result_defaults_to_bool = true;
+      profile.en_eno_rules = true;
+      profile.literal_initial_values_only = true;
+      profile.unique_names = true;
+      // STRING without a length holds 32 characters, STRING(n) at most 253 (L4363-4389, C10049).
+      profile.default_string_length = 32;
+      profile.max_string_length = 253;
       break;
   }
   return profile;
@@ -29,7 +65,13 @@ Profile make_profile(project::Profile id) {
 
 Profile make_profile(const project::ProjectConfig& config) {
   Profile profile = make_profile(config.profile);
-  profile.max_string_length = config.max_string_length;
+  // rung.toml's [target] max_string_length overrides the profile's limit only when it is set.
+  if (config.max_string_length != project::ProjectConfig{}.max_string_length) {
+    profile.max_string_length = config.max_string_length;
+  }
+  if (config.addressing == "byte") profile.addressing = AddressingMode::Byte;
+  if (config.addressing == "word") profile.addressing = AddressingMode::Word;
+  if (config.addressing == "byte-offset") profile.addressing = AddressingMode::ByteOffset;
   profile.defines = config.defines;
   return profile;
 }

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "checker/project/project_config.hpp"
+#include "checker/semantic/direct_address.hpp"
 
 namespace rung::check {
 
@@ -28,6 +29,73 @@ struct Profile {
   bool program_parameters = true;
   // TIME and integers convert implicitly (CODESYS 2.3 heritage: TIME is a DWORD of ms).
   bool time_and_integers_mix = true;
+  // Arguments of a generic standard function may be of different types that widen to one
+  // (MAX(INT, REAL), LN(INT)): CODESYS, TwinCAT, IEC 3rd ed. OpenPCS binds T to one type, and an
+  // integer constant adapts only to integer and bit types (S5024 LD 1 / LN, S5027 LD 1 / MAX r).
+  bool generic_arguments_widen = true;
+  // A function block may call an instance it received as VAR_INPUT: not in OpenPCS (S5029).
+  bool call_input_instances = true;
+  // How the numbers of %I/%Q/%M addresses map to bytes: CODESYS V3 counts units of the address's
+  // size (%MW1 = bytes 2..3), OpenPCS byte offsets (%QW1.0 starts at output byte 1).
+  AddressingMode addressing = AddressingMode::Byte;
+  // An elementary type of another size at a byte/word/dword address (a DINT AT %MW2): CODESYS
+  // reads the address as the start (AK800 manual L1200), so only a warning; IEC/OpenPCS: error.
+  bool address_size_mismatch_is_error = false;
+  // ARRAY/STRUCT/STRING AT an address: CODESYS yes (start address), OpenPCS no (L10030).
+  bool compound_types_at_addresses = true;
+  // A TASK without INTERVAL or SINGLE: CODESYS/TwinCAT run it freewheeling; IEC never starts it.
+  bool freewheeling_tasks = true;
+  // Highest TASK PRIORITY (0 is the highest priority); 0 means the manuals give no limit.
+  uint32_t max_task_priority = 31;
+  // --- Declaration rules (semantic/declaration_checker.cpp) ---------------------------------
+  // A PROGRAM may declare VAR_GLOBAL (IEC, OpenPCS S4017); CODESYS only in global variable lists.
+  bool program_globals = false;
+  // RETAIN/PERSISTENT in a FUNCTION or METHOD: CODESYS accepts it without effect (a warning);
+  // IEC and OpenPCS (S4019) refuse it.
+  bool retain_in_functions_is_error = false;
+  // A FUNCTION_BLOCK or FUNCTION local AT a complete address: CODESYS lets every instance share
+  // it (a warning); IEC and OpenPCS (S4011, C10019) allow AT only in programs and global lists.
+  bool located_block_locals_are_error = false;
+  // An AT variable in a RETAIN block: the IEC grammar allows it; CODESYS (MP300 manual L10830)
+  // and OpenPCS (L10033) keep located variables in the process image, never in retain memory.
+  bool located_retain = false;
+  // An initial value on a VAR_EXTERNAL: the CODESYS manuals show one (MP300 L11151-11299, it has
+  // no effect); the IEC grammar has none and OpenPCS refuses it (S4024).
+  bool external_initial_values = true;
+  // An initial value or CONSTANT on an AT variable: not in OpenPCS (L10031, L10034).
+  bool located_initial_values = true;
+  bool located_constants = true;
+  // VAR_INPUT / VAR_IN_OUT CONSTANT (CODESYS); the IEC grammar has CONSTANT only on VAR,
+  // VAR_GLOBAL and VAR_EXTERNAL, and never together with RETAIN.
+  bool constant_parameters = true;
+  // VAR_EXTERNAL CONSTANT (IEC, CODESYS); OpenPCS allows CONSTANT only on VAR and VAR_GLOBAL (S4018).
+  bool constant_externals = true;
+  // VAR_INPUT RETAIN (IEC, CODESYS); OpenPCS: RETAIN only on VAR, VAR_OUTPUT, VAR_GLOBAL (S4019).
+  bool retain_inputs = true;
+  // FB instances in VAR CONSTANT or VAR RETAIN blocks: not in OpenPCS (S5003, S5042).
+  bool qualified_instances = true;
+  // FB instances in a FUNCTION's variables: CODESYS yes; IEC no (a function has no state, S5004).
+  bool instances_in_functions = true;
+  // FB instances as STRUCT members, ARRAY elements or a FUNCTION's result: not in OpenPCS
+  // (S5004, S5011, S5005).
+  bool instances_in_data = true;
+  // VAR_OUTPUT, VAR_IN_OUT and VAR_EXTERNAL in a FUNCTION: not in OpenPCS (S4014-S4016).
+  bool function_outputs_and_externals = true;
+  // A FUNCTION needs at least one VAR_INPUT (OpenPCS S4036).
+  bool function_needs_input = false;
+  // A FUNCTION without a result type returns BOOL (OpenPCS L8698); elsewhere it returns nothing.
+  bool function_result_defaults_to_bool = false;
+  // EN and ENO are the IEC enable input/output: EN only a BOOL VAR_INPUT, ENO only a BOOL
+  // VAR_OUTPUT, neither RETAIN, no ENO without EN (OpenPCS S1031, S1032, S3041, S3042).
+  bool en_eno_rules = false;
+  // Initial values must be literals or enum values, not constants or variables (OpenPCS S5043).
+  bool literal_initial_values_only = false;
+  // One namespace for POUs, types and variables: a variable may not be named like a POU, a type
+  // or a global variable (OpenPCS S3046, linker L10001). CODESYS lets locals shadow them.
+  bool unique_names = false;
+  // Generic types (ANY_INT, ...) as parameter types of a user FUNCTION (CODESYS allows ANY and
+  // ANY_<type> inputs; IEC and OpenPCS S5035 keep them for standard functions).
+  bool generic_parameters = true;
   // Target: longest STRING(n) and the length of STRING without (n).
   uint32_t max_string_length = 255;
   uint32_t default_string_length = 80;

@@ -6,6 +6,9 @@
 #include <filesystem>
 
 #include "checker/constant/const_eval.hpp"
+#include "checker/semantic/address_checker.hpp"
+#include "checker/semantic/configuration_checker.hpp"
+#include "checker/semantic/recursion_checker.hpp"
 #include "parser/diagnostic_codes.hpp"
 
 namespace rung::check {
@@ -22,21 +25,43 @@ TypeKind named_kind_of(const Symbol& symbol) {
   return TypeKind::Alias;
 }
 
-// Scopes that hold the POU's generic parameters: FUNCTION F<T : ANY_NUM>.
+// The generic parameters of the FUNCTION a name is used in: FUNCTION F<T : ANY_NUM>. Only a
+// FUNCTION has them (grammar field type_parameters); asking other scopes would walk every child
+// of every GVL, STRUCT and FB for each type name, which made linking quadratic.
 SyntaxNode generic_parameters_of(const Symbol* scope) {
   for (const Symbol* s = scope; s; s = s->owner) {
-    if (s->node) {
-      if (SyntaxNode parameters = s->node.first_child_of_kind("generic_parameters")) return parameters;
-    }
+    if (s->kind == SymbolKind::Function && s->node) return s->node.child_by_field("type_parameters");
   }
   return {};
 }
+
+}  // namespace
+
+// Two project files declaring the same POU, type or global name (GVLs may share a name: CODESYS
+// merges lists of one name).
+bool is_duplicate_global(const Symbol& first, const Symbol& again) {
+  return !first.has(kLibrary) && !again.has(kLibrary) && first.source != again.source &&
+         !(first.kind == SymbolKind::GlobalList && again.kind == SymbolKind::GlobalList);
+}
+
+Diagnostic duplicate_global_diagnostic(const Symbol& again, const Source& first_source) {
+  return make_diagnostic(codes::kDuplicateDeclaration,
+                         fmt::format("'{}' is already declared in {}", again.name, first_source.document->path()),
+                         again.name_range, "POU, type and global list names must be unique in a project");
+}
+
+namespace {
 
 thread_local int constant_depth = 0;  // guards CONSTANT a := b; b := a; cycles
 
 }  // namespace
 
-ProjectModel::ProjectModel(const Profile& profile) : profile_(profile), types_(std::make_unique<TypeArena>()) {}
+ProjectModel::ProjectModel(const Profile& profile)
+    : profile_(profile),
+      types_(std::make_unique<TypeArena>()),
+      address_table_(std::make_unique<AddressTable>()),
+      configuration_table_(std::make_unique<ConfigurationTable>()),
+      recursion_index_(std::make_unique<RecursionIndex>()) {}
 ProjectModel::~ProjectModel() = default;
 
 SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::string library_name) {
@@ -62,16 +87,17 @@ SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::strin
 
 bool ProjectModel::update_source(SourceId id, std::unique_ptr<Document> document) {
   Source& source = *sources_[id];
-  const uint64_t before = source.symbols.interface_hash;
+  FileSymbols fresh = collect_file_symbols(id, *document, source.library, "");
+  if (relink_bodies_only(source, document, fresh)) return false;
   const std::string stem = std::filesystem::path(document->path()).stem().string();
   source.document = std::move(document);
-  source.symbols = collect_file_symbols(id, *source.document, source.library, "");
+  source.symbols = std::move(fresh);
   source.gvl_name_storage = stem;
   for (Symbol* list : source.symbols.global_lists) {
     if (list->name.empty()) list->name = source.gvl_name_storage;
   }
   // The old symbols are gone: the caller must link() again (other files' types point at them).
-  return source.symbols.interface_hash != before;
+  return true;
 }
 
 std::optional<SourceId> ProjectModel::find_source(std::string_view path) const {
@@ -89,16 +115,27 @@ void ProjectModel::link() {
   named_types_.clear();
   enum_numbers_.clear();
   types_ = std::make_unique<TypeArena>();
+  for (auto& source : sources_) source->link_diagnostics.clear();
   // Project files first, so their declarations shadow library stubs of the same name.
   for (const bool library : {false, true}) {
     for (auto& source : sources_) {
       if (source->library == library) index_source(*source);
     }
   }
+  // A second link() (an editor change, conditional compilation) starts over: the types resolved by
+  // the previous one live in the arena just replaced.
   for (auto& source : sources_) {
-    source->link_diagnostics.clear();
+    for (Symbol& symbol : source->symbols.storage) {
+      symbol.type = nullptr;
+      symbol.result_type = nullptr;
+    }
+  }
+  for (auto& source : sources_) {
     resolve_declarations(*source);
   }
+  address_table_ = std::make_unique<AddressTable>(build_address_table(*this));
+  configuration_table_ = std::make_unique<ConfigurationTable>(build_configuration_table(*this));
+  recursion_index_->rebuild(*this);
 }
 
 void ProjectModel::index_source(Source& source) {
@@ -112,13 +149,8 @@ void ProjectModel::index_source(Source& source) {
       const bool first_library = first->has(kLibrary);
       if (first_library && !source.library) {
         it->second = symbol;  // project shadows library (re-indexing after an edit)
-      } else if (!first_library && !source.library && first->source != symbol->source &&
-                 !(first->kind == SymbolKind::GlobalList && symbol->kind == SymbolKind::GlobalList)) {
-        const Source& other = *sources_[first->source];
-        source.link_diagnostics.push_back(make_diagnostic(
-            codes::kDuplicateDeclaration,
-            fmt::format("'{}' is already declared in {}", symbol->name, other.document->path()),
-            symbol->name_range, "POU, type and global list names must be unique in a project"));
+      } else if (is_duplicate_global(*first, *symbol)) {
+        source.link_diagnostics.push_back(duplicate_global_diagnostic(*symbol, *sources_[first->source]));
       }
     }
     if (symbol->kind == SymbolKind::GlobalList) {
@@ -180,7 +212,10 @@ void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagn
     case SymbolKind::Property:
     case SymbolKind::Action:
       if (!symbol.result_type) {
-        symbol.result_type = symbol.type_node ? resolve_type(symbol.type_node, &symbol, &diagnostics) : types_->void_type();
+        symbol.result_type = symbol.type_node ? resolve_type(symbol.type_node, &symbol, &diagnostics)
+                             : symbol.kind == SymbolKind::Function && profile_.function_result_defaults_to_bool
+                                 ? types_->elementary("BOOL")  // OpenPCS: a FUNCTION without result type is BOOL
+                                 : types_->void_type();
       }
       symbol.type = type_of(&symbol);
       resolve_bases(symbol, diagnostics);
@@ -327,6 +362,7 @@ const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope
   }
   if (const Type* elementary = types_->elementary(text, false)) return elementary;
   if (const Type* generic = types_->generic(text)) return generic;
+  if (const Symbol* local = find_local_type(scope, text)) return type_of(local);
   if (const Symbol* symbol = find_global(text); symbol && symbol->kind != SymbolKind::GlobalList) {
     return type_of(symbol);
   }
@@ -456,6 +492,27 @@ const Symbol* ProjectModel::lookup(const Symbol* scope, std::string_view name) c
   if (const Symbol* variable = find_global_variable(name)) return variable;
   if (const Symbol* global = find_global(name)) return global;
   if (const auto* values = find_enum_values(name); values && !values->empty()) return values->front();
+  return find_local_enum_value(scope, name);
+}
+
+const Symbol* ProjectModel::find_local_type(const Symbol* scope, std::string_view name) const {
+  for (const Symbol* s = scope; s; s = s->owner) {
+    if (!is_pou_kind(s->kind)) continue;
+    if (const Symbol* member = s->own_member(name); member && member->kind == SymbolKind::DataType) return member;
+  }
+  return nullptr;
+}
+
+const Symbol* ProjectModel::find_local_enum_value(const Symbol* scope, std::string_view name) const {
+  // Only reached when nothing else has the name: POU-local types are rare (OpenPCS), and this
+  // walks every member of the enclosing POUs.
+  for (const Symbol* s = scope; s; s = s->owner) {
+    if (!is_pou_kind(s->kind)) continue;
+    for (const Symbol* member : s->ordered) {
+      if (member->kind != SymbolKind::DataType || member->has(kQualifiedOnly)) continue;
+      if (const Symbol* value = member->own_member(name); value && value->kind == SymbolKind::EnumValue) return value;
+    }
+  }
   return nullptr;
 }
 

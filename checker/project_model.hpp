@@ -21,6 +21,10 @@
 
 namespace rung::check {
 
+struct AddressTable;        // semantic/address_checker.hpp
+struct ConfigurationTable;  // semantic/configuration_checker.hpp
+class RecursionIndex;       // semantic/recursion_checker.hpp
+
 struct Source {
   std::unique_ptr<Document> document;
   FileSymbols symbols;
@@ -30,6 +34,11 @@ struct Source {
   std::vector<Diagnostic> link_diagnostics;
   std::string gvl_name_storage;  // a plain file's GVL name (its file name), viewed by its symbols
 };
+
+// A second project-wide declaration of a global name, and its E003 (shared by link() and the
+// incremental re-link).
+bool is_duplicate_global(const Symbol& first, const Symbol& again);
+Diagnostic duplicate_global_diagnostic(const Symbol& again, const Source& first_source);
 
 class ProjectModel {
  public:
@@ -42,8 +51,10 @@ class ProjectModel {
 
   // Adds a parsed file; `library_name` non-empty marks a stub library file. Call link() after.
   SourceId add_source(std::unique_ptr<Document> document, std::string library_name = {});
-  // Replaces a file's text (an editor change); link() must follow. Returns whether what other
-  // files can see changed; if not, only this file's diagnostics can differ.
+  // Replaces a file's text (an editor change). Returns true when what other files can see changed:
+  // then link() must follow and every file may have new diagnostics. Returns false when only
+  // bodies changed: the model is already linked again (incremental_link.cpp) and only this
+  // file's diagnostics can differ.
   bool update_source(SourceId id, std::unique_ptr<Document> document);
 
   // Ties names across files and resolves every declaration's type. Deterministic.
@@ -68,6 +79,10 @@ class ProjectModel {
   // What a bare name means inside `scope` (a POU or member): locals, then the owner's members
   // and bases, then globals. Returns nullptr if nothing is visible by that name.
   const Symbol* lookup(const Symbol* scope, std::string_view name) const;
+  // A TYPE declared inside `scope` or the POUs around it (OpenPCS POU-local types); nullptr if none.
+  const Symbol* find_local_type(const Symbol* scope, std::string_view name) const;
+  // A value of an enumeration declared inside `scope` or the POUs around it.
+  const Symbol* find_local_enum_value(const Symbol* scope, std::string_view name) const;
   // Whether `scope`, its owners or their bases EXTEND something that could not be resolved: names
   // may come from there, so "not declared" would be a guess.
   bool has_unresolved_base(const Symbol* scope) const;
@@ -86,11 +101,23 @@ class ProjectModel {
   // An enum value's integer value.
   std::optional<__int128> enum_value(const Symbol* value) const;
 
+  // --- Whole-project tables, built at the end of link() and read-only after it ----------------
+  // Checks of one file that need every other file too (AT addresses that overlap across files,
+  // VAR_CONFIG entries against the instances they complete) read them, so files checked in
+  // parallel never build them twice.
+  const AddressTable& address_table() const { return *address_table_; }
+  const ConfigurationTable& configuration_table() const { return *configuration_table_; }
+  const RecursionIndex& recursion_index() const { return *recursion_index_; }
+
   // Everything in declaration order: for checks that walk all POUs.
   std::vector<const Symbol*> top_level_symbols(SourceId id) const;
 
  private:
   void index_source(Source& source);
+  // incremental_link.cpp: a body-only edit without a full link().
+  bool relink_bodies_only(Source& source, std::unique_ptr<Document>& document, FileSymbols& fresh);
+  void rekey_names(SourceId id, std::string_view old_text);
+  void report_duplicate_globals(Source& source);
   void resolve_declarations(Source& source);
   void resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagnostics);
   void resolve_bases(Symbol& symbol, std::vector<Diagnostic>& diagnostics);
@@ -109,6 +136,9 @@ class ProjectModel {
   std::unordered_map<std::string_view, NameMap, NameHash, NameEqual> libraries_;
   std::unordered_map<const Symbol*, const Type*> named_types_;  // data types and POUs
   std::unordered_map<const Symbol*, __int128> enum_numbers_;
+  std::unique_ptr<AddressTable> address_table_;
+  std::unique_ptr<ConfigurationTable> configuration_table_;
+  std::unique_ptr<RecursionIndex> recursion_index_;
   mutable std::mutex types_mutex_;  // derived types may be created while bodies are checked
 };
 

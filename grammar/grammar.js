@@ -181,6 +181,9 @@ module.exports = grammar({
     $._kw_resource,
     $._kw_initial_step,
     $._kw_jmp,
+    $._kw_opc,
+    $._il_same_line,
+    $._argument_semicolon,
     $._error_sentinel,
   ],
 
@@ -192,7 +195,6 @@ module.exports = grammar({
     [$._dotted_name, $._reference],
     [$.case_element],
     [$._reference, $._il_operator],
-    [$.jmp_statement, $._il_operator],
     [$.return_statement, $._il_operator],
     [$._bare_call, $._fragment_expression],
     [$._bare_call, $._reference],
@@ -308,9 +310,11 @@ module.exports = grammar({
 
     _dotted_name: $ => seq($.identifier, repeat1(seq('.', $.identifier))),
 
-    type_name: $ => seq($.identifier, optional($._type_name_tail)),
+    // Greedy: a body that starts with the global scope operator (.x := 1) right after a result
+    // type (METHOD M : T) is rare, a dotted type name (Lib.T) is not.
+    type_name: $ => prec.right(seq($.identifier, optional($._type_name_tail))),
 
-    _type_name_tail: $ => seq('.', $.identifier, optional($._type_name_tail)),
+    _type_name_tail: $ => prec.right(seq('.', $.identifier, optional($._type_name_tail))),
 
     // -----------------------------------------------------------------------
     // POUs
@@ -499,10 +503,12 @@ module.exports = grammar({
       optional(';'),
     )),
 
+    // The ':' is required; without it (TYPE S STRUCT ..., as old manuals print it) the struct
+    // still parses so that its members are read, and the syntax checks report the missing ':'.
     struct_type: $ => prec.right(seq(
       field('name', $.identifier),
       optional($.extends_clause),
-      ':',
+      optional(':'),
       kw('STRUCT'),
       optional($.extends_clause),
       ...declarationList($),
@@ -624,7 +630,8 @@ module.exports = grammar({
 
     empty_declaration: _ => ';',
 
-    var_qualifier: _ => choice(...VAR_QUALIFIERS.map(kw)),
+    // OPC (OpenPCS: publish to the OPC server) is a contextual word: a variable may be named OPC.
+    var_qualifier: $ => choice(...VAR_QUALIFIERS.map(kw), alias($._kw_opc, 'OPC')),
 
     // A declaration ends with ';'; only the last one of a block (right before
     // END_VAR / END_STRUCT / END_UNION) may leave it out.
@@ -651,7 +658,9 @@ module.exports = grammar({
     ),
 
     // RuSTy variadic inputs: IN : {sized} T...;  args : ...;
-    variadic_type: $ => seq(optional(field('type', $._type_spec)), '...'),
+    // The '...' follows its type directly, so that an elision line after a declaration
+    // ("x : INT;" NEWLINE "...") is no variadic type.
+    variadic_type: $ => choice(seq(field('type', $._type_spec), token.immediate('...')), '...'),
 
     // FB_init arguments of each element of an array of function blocks:
     // aFb : ARRAY[0..1] OF FB_X[(a := 1), (a := 2)];
@@ -886,6 +895,7 @@ module.exports = grammar({
     // Anything that may be assigned, called or followed by . [ ] ^
     _reference: $ => choice(
       $.identifier,
+      $.global_reference,
       $.direct_variable,
       $.member_expression,
       $.index_expression,
@@ -893,7 +903,10 @@ module.exports = grammar({
       $.call_expression,
     ),
 
-    _postfix_target: $ => $._reference,
+    _postfix_target: $ => prec(1, $._reference),
+
+    // CODESYS V3 global scope operator: .ivar is the global ivar even where a local one hides it.
+    global_reference: $ => seq('.', field('name', $.identifier)),
 
     parenthesized_expression: $ => seq('(', $._expression, ')'),
 
@@ -946,12 +959,17 @@ module.exports = grammar({
       '(',
       optional(seq(
         choice($.argument, $.output_argument),
-        repeat(seq(choice(',', '|'), choice($.argument, $.output_argument))),
+        repeat(seq(choice(',', '|', $._wrong_argument_separator), choice($.argument, $.output_argument))),
         // The input assistant of TwinCAT/CODESYS leaves "ErrorID => ," before the ')'.
         optional(','),
       )),
       ')',
     ),
+
+    // SHL(in_word;n): a ';' between arguments that the same line closes with ')' (the scanner
+    // tells). It can never be completed (the sentinel only exists in error recovery), so the
+    // ';' is reported where it stands, and the arguments after it still belong to the call.
+    _wrong_argument_separator: $ => seq(alias($._argument_semicolon, ';'), $._unreachable),
 
     argument: $ => choice(
       seq(field('name', $.identifier), ':=', optional(field('value', $._expression))),
@@ -1028,7 +1046,16 @@ module.exports = grammar({
     // -----------------------------------------------------------------------
     // Instruction List
     // -----------------------------------------------------------------------
-    il_body: $ => prec.right(repeat1(choice($.il_instruction, $.il_label))),
+    il_body: $ => prec.right(repeat1(choice($.il_instruction, $.il_label, $._stray_closer))),
+
+    // A closing word of a declaration block where an instruction may start (a doubled END_VAR)
+    // is lexed as that keyword and can never be completed (the scanner never produces the
+    // sentinel outside error recovery): it becomes an ERROR node instead of an IL instruction
+    // with an unknown operator.
+    _stray_closer: $ => seq(choice(kw('END_VAR'), kw('END_STRUCT'), kw('END_TYPE')), $._unreachable),
+
+    // The sentinel that never comes, visible so that the syntax checks find it when it is MISSING.
+    _unreachable: $ => alias($._error_sentinel, 'unreachable'),
 
     il_label: $ => seq(field('name', choice($.identifier, alias(kw('CONTINUE'), $.identifier))), ':'),
 
@@ -1039,9 +1066,11 @@ module.exports = grammar({
     ),
 
     il_instruction: $ => choice(
+      // IL is line-oriented: the operands stand on the operator's line (the external scanner
+      // tells so), so "Foo" NEWLINE "Bar();" is never an instruction with an operand.
       seq(
         field('operator', $._il_operator),
-        optional(commaSep1(field('operand', $._expression))),
+        optional(seq($._il_same_line, commaSep1(field('operand', $._expression)))),
         $._il_newline,
       ),
       // deferred operator: AND( ... ) over several lines

@@ -74,6 +74,10 @@ inline constexpr std::string_view kRecursion = "E209";
 inline constexpr std::string_view kInvalidThisSuper = "E210";
 inline constexpr std::string_view kInvalidInheritance = "E211";
 inline constexpr std::string_view kInvalidCallTarget = "E212";
+inline constexpr std::string_view kLocalTypeInInterface = "E213";
+inline constexpr std::string_view kFunctionWithoutInput = "E214";
+inline constexpr std::string_view kQualifierNotAllowed = "E215";
+inline constexpr std::string_view kEnoWithoutEn = "E216";
 inline constexpr std::string_view kUnknownParameter = "E301";
 inline constexpr std::string_view kMissingParameter = "E302";
 inline constexpr std::string_view kDuplicateParameter = "E303";
@@ -101,13 +105,19 @@ inline constexpr std::string_view kInvalidAddress = "E505";
 inline constexpr std::string_view kUnknownProgramOrTask = "E506";
 inline constexpr std::string_view kTaskWithoutTrigger = "E507";
 inline constexpr std::string_view kVarConfigPath = "E508";
+inline constexpr std::string_view kInitialValueNotAllowed = "E509";
 inline constexpr std::string_view kObsolete = "E601";
 inline constexpr std::string_view kPragmaWarning = "E602";
 inline constexpr std::string_view kPragmaError = "E603";
 inline constexpr std::string_view kUnknownPragma = "E604";
+inline constexpr std::string_view kPragmaInfo = "E605";
+inline constexpr std::string_view kConditionalPragma = "E606";
 inline constexpr std::string_view kNotConstant = "E701";
 inline constexpr std::string_view kDivisionByZero = "E702";
 inline constexpr std::string_view kConstantOverflow = "E703";
+inline constexpr std::string_view kIlResultUndefined = "E801";
+inline constexpr std::string_view kIlNotInParentheses = "E802";
+inline constexpr std::string_view kIlOperandCount = "E803";
 }  // namespace codes
 
 }  // namespace rung

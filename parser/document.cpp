@@ -119,7 +119,23 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
   } else {
     tree_text = decoded_->utf8;
   }
+  reading_diagnostics_ = diagnostics_;
+  parse(std::move(tree_text), options, true);
+}
 
+Document Document::reread(std::string tree_text) const {
+  Document doc;
+  doc.path_ = path_;
+  *doc.decoded_ = *decoded_;
+  doc.file_lines_ = std::make_unique<source::LineIndex>(doc.decoded_->utf8);
+  doc.container_ = container_;
+  doc.reading_diagnostics_ = reading_diagnostics_;
+  doc.diagnostics_ = reading_diagnostics_;
+  doc.parse(std::move(tree_text), {}, false);
+  return doc;
+}
+
+void Document::parse(std::string tree_text, const DocumentOptions& options, bool try_first_branches) {
   tree_.emplace(SyntaxTree::parse(std::move(tree_text), options.parse));
   if (tree_->aborted()) {
     diagnostics_.push_back(make(codes::kParseAborted, Severity::Error, {0, 0},
@@ -160,7 +176,7 @@ void Document::build(std::string_view bytes, const DocumentOptions& options) {
   // Conditional-compilation branches may split a statement ({IF defined(X)} IF a THEN {ELSE}
   // IF b THEN {END_IF}); when the file does not parse as written, read only the first branch of
   // each group, and keep that reading if it has fewer errors.
-  if (errors_in(syntax) > 0) {
+  if (try_first_branches && errors_in(syntax) > 0) {
     std::string first_branches = tree_->text();
     if (keep_first_conditional_branches(*tree_, first_branches) > 0) {
       SyntaxTree reparsed = SyntaxTree::parse(std::move(first_branches), options.parse);

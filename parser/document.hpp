@@ -72,9 +72,19 @@ class Document {
   // All diagnostics (syntax, encoding, container) with ranges in FILE coordinates, sorted.
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
+  // The text the tree was first read from: the decoded file, or a container's virtual text.
+  std::string_view source_text() const { return container_ ? container_->virtual_text : decoded_->utf8; }
+  // The same file read from `tree_text`, a rewrite of source_text() with the same length and line
+  // ends (conditional compilation blanks its inactive branches): a new tree and new syntax
+  // diagnostics; file text, container and encoding findings stay. The first-branch fallback of
+  // build() is not tried: the rewrite has already chosen the branches.
+  Document reread(std::string tree_text) const;
+
  private:
   Document() = default;
   void build(std::string_view bytes, const DocumentOptions& options);
+  // Parses `tree_text` and adds its syntax diagnostics to the reading ones.
+  void parse(std::string tree_text, const DocumentOptions& options, bool try_first_branches);
 
   std::string path_;
   // Behind a pointer so the text stays put when the Document moves: file_lines_ views it.
@@ -83,6 +93,7 @@ class Document {
   std::optional<containers::ContainerDocument> container_;
   std::optional<SyntaxTree> tree_;
   std::vector<Diagnostic> diagnostics_;
+  std::vector<Diagnostic> reading_diagnostics_;  // encoding and container findings (no syntax)
 };
 
 }  // namespace rung

@@ -7,7 +7,9 @@
 #include <optional>
 #include <string_view>
 
+#include "parser/declaration_syntax.hpp"
 #include "parser/diagnostic_codes.hpp"
+#include "parser/keywords.hpp"
 #include "parser/source/line_index.hpp"
 
 namespace rung {
@@ -96,7 +98,13 @@ class Collector {
 
   std::vector<Diagnostic> run() {
     if (!tree_.root()) return {};
+    std::vector<SyntaxFinding> findings;
+    check_declaration_syntax(tree_, [&findings](SyntaxFinding f) { findings.push_back(std::move(f)); });
+    for (const auto& f : findings) {
+      if (!f.explains_closer.empty()) explanations_.push_back({f.range.end, std::string(f.explains_closer)});
+    }
     walk(tree_.root());
+    for (auto& f : findings) report_finding(std::move(f));
     check_unterminated_comment();
     sort_diagnostics(out_);
     if (out_.size() > options_.max_errors) {
@@ -141,6 +149,20 @@ class Collector {
     out_.push_back(std::move(d));
   }
 
+  // A finding of the declaration pass, or of the walk: a stray closing keyword that a misspelled
+  // opener before it explains (VAR_GLOBAS ... END_VAR) is no second mistake.
+  void report_finding(SyntaxFinding f) {
+    if (!f.stray_keyword.empty()) {
+      for (auto& e : explanations_) {
+        if (!e.closer.empty() && e.closer == f.stray_keyword && e.after <= f.range.begin) {
+          e.closer.clear();
+          return;
+        }
+      }
+    }
+    add(f.code, f.range, std::move(f.message), std::move(f.help));
+  }
+
   // Iterative walk: error nodes are reported and not entered (their insides are echoes).
   void walk(SyntaxNode root) {
     std::vector<SyntaxNode> stack{root};
@@ -152,12 +174,13 @@ class Collector {
         continue;
       }
       if (node.is_error()) {
-        // Several error regions inside one statement are one mistake: report the first only.
+        // Several error regions inside one statement or declaration are one mistake: report the
+        // first only.
         if (node.begin() < skip_errors_until_) continue;
         report_error(node);
         for (SyntaxNode p = node.parent(); p; p = p.parent()) {
           std::string_view k = p.kind();
-          if (k.size() > 10 && k.substr(k.size() - 10) == "_statement") {
+          if ((k.size() > 10 && k.substr(k.size() - 10) == "_statement") || k == "var_declaration") {
             skip_errors_until_ = p.end();
             break;
           }
@@ -172,6 +195,25 @@ class Collector {
 
   void report_missing(SyntaxNode node) {
     std::string kind = std::string(node.kind());
+    // The grammar reads a closing word where an IL instruction may start (a doubled END_VAR) up
+    // to a token that never comes: the word itself is the mistake.
+    // The same for a ';' between the arguments of a call, SHL(in_word;n).
+    if (kind == "unreachable") {
+      SyntaxNode word = last_leaf_before(tree_.root(), node.begin());
+      if (!word) return;
+      if (word.text() != ";") {
+        report_finding(stray_keyword(word));
+        return;
+      }
+      SyntaxNode call = node.parent();
+      while (call && call.kind() != "call_expression") call = call.parent();
+      SyntaxNode function = call ? call.child_by_field("function") : SyntaxNode{};
+      add(codes::kSyntaxError, word.range(),
+          function ? fmt::format("';' between the arguments of '{}'", excerpt(function.text()))
+                   : std::string("';' between the arguments of a call"),
+          "separate arguments with ','; ';' ends a statement");
+      return;
+    }
     std::string opener = opener_of(upper(kind));
     uint32_t at = node.begin();
     if (!opener.empty()) {
@@ -227,10 +269,21 @@ class Collector {
   // The scanner lets an unclosed comment run to the end of the file, which is valid as a token;
   // only the comment that ends the file can be unclosed, so only that one is checked.
   void check_unterminated_comment() {
+    // The last leaf with text: zero-width MISSING tokens may follow it at any depth.
     SyntaxNode node = tree_.root();
-    while (node.child_count() > 0) node = node.child(node.child_count() - 1);
-    while (node && node.end() == node.begin()) node = node.prev_sibling();
-    if (!node || node.child_count() > 0) return;
+    for (;;) {
+      SyntaxNode pick;
+      for (uint32_t i = node.child_count(); i-- > 0;) {
+        SyntaxNode c = node.child(i);
+        if (c.end() > c.begin()) {
+          pick = c;
+          break;
+        }
+      }
+      if (!pick) break;
+      node = pick;
+    }
+    if (!node || node.child_count() > 0 || node == tree_.root()) return;
     std::string_view text = node.text();
     if (text.rfind("/*", 0) == 0) {
       if (text.size() < 4 || text.substr(text.size() - 2) != "*/") report_unclosed_comment(node.begin(), "*/");
@@ -274,6 +327,8 @@ class Collector {
     std::string_view first =
         leaf && leaf.end() > leaf.begin() ? leaf.text() : body.substr(0, std::min<size_t>(body.size(), 1));
     if (leaf && leaf.begin() > begin) first = body.substr(0, std::min<size_t>(body.size(), 1));
+    // An elision "..." splits into '.' tokens where a global name (.x) may start.
+    if (body.rfind("...", 0) == 0) first = body.substr(0, 3);
 
     if (body.rfind("(*", 0) == 0 || body.rfind("/*", 0) == 0) {
       std::string_view close = body.rfind("(*", 0) == 0 ? "*)" : "*/";
@@ -329,6 +384,8 @@ class Collector {
         return;
       }
     }
+    if (report_stray_closer(node)) return;
+    if (report_bare_name_line(node)) return;
     if (report_common_mistake(node)) return;
     if (report_block_structure(node)) return;
     if (report_missing_semicolon(node)) return;
@@ -342,6 +399,40 @@ class Collector {
     std::string context = describe_context(node);
     add(codes::kSyntaxError, {begin, std::max(begin + 1, begin + static_cast<uint32_t>(first.size()))},
         fmt::format("unexpected '{}'{}", excerpt(first), context));
+  }
+
+  // A name alone on its line before the body's statements ("PRG_PID" NEWLINE "M_Act();"): a call
+  // of a program written without "();" whose ';' is missing (it is no IL, which never mixes
+  // with statements).
+  bool report_bare_name_line(SyntaxNode error) {
+    std::vector<SyntaxNode> leaves = leaves_of(error, 16);
+    if (leaves.empty() || leaves.size() % 2 == 0) return false;
+    for (size_t i = 0; i < leaves.size(); ++i) {
+      bool ok = i % 2 == 0 ? leaves[i].kind() == "identifier" : leaves[i].text() == ".";
+      if (!ok) return false;
+    }
+    SyntaxNode next = error.next_sibling();
+    while (next && next.is_extra()) next = next.next_sibling();
+    if (!next || (next.kind() != "statement_list" && next.kind().find("_statement") == std::string_view::npos)) {
+      return false;
+    }
+    SyntaxNode last = leaves.back();
+    if (line_of(leaves.front().begin()) != line_of(last.end()) || line_of(next.begin()) <= line_of(last.end())) {
+      return false;
+    }
+    add(codes::kMissingToken, {last.end(), last.end()}, "missing ';' after statement",
+        fmt::format("end the statement with ';' (a call without arguments is written {}();)", error.text()));
+    return true;
+  }
+
+  // An error region that is one closing keyword alone (a doubled END_VAR before the body).
+  bool report_stray_closer(SyntaxNode error) {
+    std::vector<SyntaxNode> leaves = leaves_of(error, 2);
+    if (leaves.size() != 1) return false;
+    std::string word = upper(leaves[0].text());
+    if (word.rfind("END_", 0) != 0 || !keywords::is_reserved(word)) return false;
+    report_finding(stray_keyword(leaves[0]));
+    return true;
   }
 
   // Mistakes people bring from other languages or make by typing: misspelled keywords
@@ -375,7 +466,7 @@ class Collector {
       }
       if (leaf.kind() == "identifier" || (!leaf.is_named() && !keyword_of(leaf).empty())) {
         std::string word = upper(t);
-        std::string_view meant = misspelled_keyword(word);
+        std::string_view meant = keywords::misspelled(word, false);
         if (!meant.empty()) {
           add(codes::kMisspelledKeyword, leaf.range(),
               fmt::format("'{}' is not a keyword — did you mean {}?", t, meant), fmt::format("write {}", meant));
@@ -400,55 +491,6 @@ class Collector {
       }
     }
     return false;
-  }
-
-  // The keyword a misspelled word most likely stands for, or "" when it is no near miss.
-  static std::string_view misspelled_keyword(const std::string& word) {
-    static constexpr std::string_view kKeywords[] = {"END_IF",
-                                                     "END_CASE",
-                                                     "END_FOR",
-                                                     "END_WHILE",
-                                                     "END_REPEAT",
-                                                     "END_VAR",
-                                                     "END_TYPE",
-                                                     "END_STRUCT",
-                                                     "END_PROGRAM",
-                                                     "END_FUNCTION",
-                                                     "END_FUNCTION_BLOCK",
-                                                     "END_METHOD",
-                                                     "END_PROPERTY",
-                                                     "END_ACTION",
-                                                     "END_INTERFACE",
-                                                     "END_UNION",
-                                                     "ELSIF"};
-    if (word == "ELSEIF" || word == "ELSE_IF" || word == "ELIF" || word == "ELSIFF") return "ELSIF";
-    if (word.rfind("END", 0) != 0 || word.size() < 5) return {};
-    std::string_view best;
-    size_t best_distance = 3;
-    for (std::string_view k : kKeywords) {
-      if (k == word) return {};
-      size_t d = edit_distance(word, k);
-      if (d < best_distance) {
-        best_distance = d;
-        best = k;
-      }
-    }
-    return best;
-  }
-
-  static size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-      size_t diagonal = row[0];
-      row[0] = i;
-      for (size_t j = 1; j <= b.size(); ++j) {
-        size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        diagonal = up;
-      }
-    }
-    return row[b.size()];
   }
 
   // An error region that only wraps complete declarations (a whole FUNCTION that could not be
@@ -669,8 +711,14 @@ class Collector {
     return {};
   }
 
+  struct Explanation {
+    uint32_t after;
+    std::string closer;  // emptied once a stray closer used it
+  };
+
   const SyntaxTree& tree_;
   const SyntaxDiagnosticOptions& options_;
+  std::vector<Explanation> explanations_;
   std::vector<Diagnostic> out_;
   std::optional<source::LineIndex> lines_;
   uint32_t skip_errors_until_ = 0;

@@ -13,9 +13,27 @@ std::string_view SyntaxNode::text() const {
   return source_.substr(b, e - b);
 }
 
+// Walks the children with a cursor: ts_node_child(i) restarts from the first child in the
+// tree-sitter 0.20 runtime, so index loops over a node's children are quadratic.
+template <typename Visit>
+void for_each_child(TSNode node, Visit visit) {
+  TSTreeCursor cursor = ts_tree_cursor_new(node);
+  if (ts_tree_cursor_goto_first_child(&cursor)) {
+    do {
+      if (!visit(cursor)) break;
+    } while (ts_tree_cursor_goto_next_sibling(&cursor));
+  }
+  ts_tree_cursor_delete(&cursor);
+}
+
 SyntaxNode SyntaxNode::child_by_field(std::string_view field) const {
-  std::vector<SyntaxNode> all = children_by_field(field);
-  return all.empty() ? SyntaxNode() : all.front();
+  SyntaxNode found;
+  for_each_child(node_, [&](const TSTreeCursor& cursor) {
+    const char* name = ts_tree_cursor_current_field_name(&cursor);
+    if (name && field == name) found = wrap(ts_tree_cursor_current_node(&cursor));
+    return !found;
+  });
+  return found;
 }
 
 // Field names come from a tree cursor: ts_node_field_name_for_child of the tree-sitter 0.20
@@ -52,21 +70,32 @@ std::vector<SyntaxNode> SyntaxNode::children_by_field(std::string_view field) co
 
 std::vector<SyntaxNode> SyntaxNode::children_of_kind(std::string_view kind) const {
   std::vector<SyntaxNode> out;
-  uint32_t n = named_child_count();
-  for (uint32_t i = 0; i < n; ++i) {
-    SyntaxNode c = named_child(i);
-    if (c.kind() == kind) out.push_back(c);
-  }
+  for_each_child(node_, [&](const TSTreeCursor& cursor) {
+    TSNode child = ts_tree_cursor_current_node(&cursor);
+    if (ts_node_is_named(child) && kind == ts_node_type(child)) out.push_back(wrap(child));
+    return true;
+  });
+  return out;
+}
+
+std::vector<SyntaxNode> SyntaxNode::named_children() const {
+  std::vector<SyntaxNode> out;
+  for_each_child(node_, [&](const TSTreeCursor& cursor) {
+    TSNode child = ts_tree_cursor_current_node(&cursor);
+    if (ts_node_is_named(child)) out.push_back(wrap(child));
+    return true;
+  });
   return out;
 }
 
 SyntaxNode SyntaxNode::first_child_of_kind(std::string_view kind) const {
-  uint32_t n = named_child_count();
-  for (uint32_t i = 0; i < n; ++i) {
-    SyntaxNode c = named_child(i);
-    if (c.kind() == kind) return c;
-  }
-  return {};
+  SyntaxNode found;
+  for_each_child(node_, [&](const TSTreeCursor& cursor) {
+    TSNode child = ts_tree_cursor_current_node(&cursor);
+    if (ts_node_is_named(child) && kind == ts_node_type(child)) found = wrap(child);
+    return !found;
+  });
+  return found;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdlib>
 
 namespace rung::check {
@@ -115,6 +116,8 @@ std::optional<__int128> parse_duration_literal(std::string_view text, std::strin
   }};
   long double total = 0;
   int last_unit = -1;
+  long double last_value = 0;
+  int units = 0;
   size_t i = 0;
   bool any = false;
   while (i < rest.size()) {
@@ -147,12 +150,140 @@ std::optional<__int128> parse_duration_literal(std::string_view text, std::strin
       return std::nullopt;
     }
     last_unit = unit_index;
-    total += std::strtold(number.c_str(), nullptr) * kUnits[static_cast<size_t>(unit_index)].second;
+    last_value = std::strtold(number.c_str(), nullptr);
+    total += last_value * kUnits[static_cast<size_t>(unit_index)].second;
+    ++units;
     any = true;
   }
   if (!any) return std::nullopt;
+  // TIME: the largest unit may overflow (T#100s12ms) and CODESYS normalises middle ones (T#3d29h
+  // is T#4d5h), but the smallest of several may not: T#5m68s is an error (CODESYS textbook,
+  // L4198). LTIME has no such rule: the CODESYS V3 manual's own example is
+  // LTIME#3445343m3424732874823ns (MP300 manual).
+  const bool long_time = !text.empty() && (text.front() == 'L' || text.front() == 'l');
+  constexpr std::array<long double, 7> kLimits = {0, 24, 60, 60, 1000, 1000, 1000};
+  if (!long_time && units > 1 && last_unit > 0 && last_value >= kLimits[static_cast<size_t>(last_unit)]) {
+    if (error) {
+      *error = fmt::format("the smallest unit overflows ({}{} is {} or more; carry it into the next larger unit)",
+                           static_cast<long long>(last_value), kUnits[static_cast<size_t>(last_unit)].first,
+                           static_cast<long long>(kLimits[static_cast<size_t>(last_unit)]));
+    }
+    return std::nullopt;
+  }
   const __int128 nanoseconds = static_cast<__int128>(total + 0.5L);
   return negative ? -nanoseconds : nanoseconds;
+}
+
+namespace {
+
+// Reads digits (and '_' separators) at `pos`; nullopt when there are none.
+std::optional<int64_t> read_number(std::string_view text, size_t& pos) {
+  const size_t start = pos;
+  int64_t value = 0;
+  while (pos < text.size() && (std::isdigit(static_cast<unsigned char>(text[pos])) || text[pos] == '_')) {
+    if (text[pos] != '_') value = std::min<int64_t>(value * 10 + (text[pos] - '0'), 1'000'000'000);
+    ++pos;
+  }
+  if (pos == start) return std::nullopt;
+  return value;
+}
+
+bool is_leap_year(int64_t year) { return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0; }
+
+int64_t days_in_month(int64_t year, int64_t month) {
+  static constexpr std::array<int64_t, 12> kDays = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  return month == 2 && is_leap_year(year) ? 29 : kDays[static_cast<size_t>(month - 1)];
+}
+
+// Days from 1970-01-01 (proleptic Gregorian calendar).
+int64_t days_since_epoch(int64_t year, int64_t month, int64_t day) {
+  int64_t days = 0;
+  for (int64_t y = 1970; y < year; ++y) days += is_leap_year(y) ? 366 : 365;
+  for (int64_t m = 1; m < month; ++m) days += days_in_month(year, m);
+  return days + day - 1;
+}
+
+struct DateFields {
+  int64_t year = 0, month = 0, day = 0;
+};
+
+std::string read_date(std::string_view text, size_t& pos, DateFields& date) {
+  auto year = read_number(text, pos);
+  if (!year || pos >= text.size() || text[pos++] != '-') return "a date is written YYYY-MM-DD";
+  auto month = read_number(text, pos);
+  if (!month || pos >= text.size() || text[pos++] != '-') return "a date is written YYYY-MM-DD";
+  auto day = read_number(text, pos);
+  if (!day) return "a date is written YYYY-MM-DD";
+  if (*year < 1970) return fmt::format("year {} is before 1970, where dates start", *year);
+  if (*month < 1 || *month > 12) return fmt::format("month {} does not exist", *month);
+  if (*day < 1 || *day > days_in_month(*year, *month)) {
+    return fmt::format("{:04}-{:02} has no day {}", *year, *month, *day);
+  }
+  date = {*year, *month, *day};
+  return {};
+}
+
+// hh:mm:ss[.fff]; `seconds_of_day` receives the whole seconds.
+std::string read_time_of_day(std::string_view text, size_t& pos, int64_t& seconds_of_day) {
+  auto hours = read_number(text, pos);
+  if (!hours || pos >= text.size() || text[pos++] != ':') return "a time of day is written hh:mm:ss";
+  auto minutes = read_number(text, pos);
+  if (!minutes) return "a time of day is written hh:mm:ss";
+  int64_t seconds = 0;
+  if (pos < text.size() && text[pos] == ':') {
+    ++pos;
+    auto read = read_number(text, pos);
+    if (!read) return "a time of day is written hh:mm:ss";
+    seconds = *read;
+    if (pos < text.size() && text[pos] == '.') {
+      ++pos;
+      if (!read_number(text, pos)) return "a fraction of a second needs digits after '.'";
+    }
+  }
+  if (*hours > 23) return fmt::format("hour {} does not exist (0..23)", *hours);
+  if (*minutes > 59) return fmt::format("minute {} does not exist (0..59)", *minutes);
+  if (seconds > 59) return fmt::format("second {} does not exist (0..59)", seconds);
+  seconds_of_day = *hours * 3600 + *minutes * 60 + seconds;
+  return {};
+}
+
+}  // namespace
+
+std::string point_in_time_literal_problem(std::string_view text) {
+  const size_t hash = text.find('#');
+  if (hash == std::string_view::npos) return "a '#' is missing";
+  std::string prefix;
+  for (char c : text.substr(0, hash)) prefix += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string_view value = text.substr(hash + 1);
+  const bool long_variant = prefix.starts_with("L");  // LDATE, LTOD, LDT: 64 bits of ns, up to 2554
+  if (long_variant) prefix.erase(0, 1);
+  if (prefix == "DATE_AND_TIME") prefix = "DT";
+  if (prefix == "TIME_OF_DAY") prefix = "TOD";
+  if (prefix == "DATE") prefix = "D";
+  size_t pos = 0;
+  std::string problem;
+  int64_t seconds = 0;
+  DateFields date;
+  if (prefix == "TOD") {
+    problem = read_time_of_day(value, pos, seconds);
+  } else {
+    problem = read_date(value, pos, date);
+    if (problem.empty() && prefix == "DT") {
+      if (pos >= value.size() || value[pos++] != '-') return "a date and time is written YYYY-MM-DD-hh:mm:ss";
+      problem = read_time_of_day(value, pos, seconds);
+    }
+  }
+  if (!problem.empty()) return problem;
+  if (pos != value.size()) return fmt::format("unexpected '{}'", value.substr(pos));
+  if (long_variant || prefix == "TOD") return {};
+  // DATE and DT count seconds since 1970 in 32 bits: the last one is 2106-02-07-06:28:15 (the
+  // CODESYS textbook prints 02-06, one day early: 2^32 - 1 s is 49,710 days and 6:28:15).
+  const int64_t total = days_since_epoch(date.year, date.month, date.day) * 86400 + seconds;
+  if (total > 0xFFFFFFFFll) {
+    return prefix == "DT" ? "beyond DT#2106-02-07-06:28:15, the last point a DT holds (use LDT)"
+                          : "beyond D#2106-02-07, the last day a DATE holds (use LDATE)";
+  }
+  return {};
 }
 
 std::optional<std::string> parse_string_literal(std::string_view text, bool* wide) {

@@ -33,6 +33,9 @@ std::optional<__int128> parse_integer_literal(std::string_view text);  // 123, 1
 std::optional<double> parse_real_literal(std::string_view text);
 // T#1h2m3s4ms, TIME#-5s, LT#1.5d: nanoseconds. `error` says why it is rejected (unit order, ...).
 std::optional<__int128> parse_duration_literal(std::string_view text, std::string* error = nullptr);
+// What is wrong with a DATE, TIME_OF_DAY or DATE_AND_TIME literal (D#2024-02-30, TOD#45:40:30,
+// DT#2106-02-06-06:28:16 beyond the 32-bit range); empty when it is a valid point in time.
+std::string point_in_time_literal_problem(std::string_view text);
 // '...' or "..." with $-escapes decoded; `wide` for double quotes.
 std::optional<std::string> parse_string_literal(std::string_view text, bool* wide = nullptr);
 

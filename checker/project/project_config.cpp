@@ -184,8 +184,14 @@ class ConfigReader {
           out_.config.max_string_length = static_cast<uint32_t>(*n);
         else
           bad_value(value, "'max_string_length' must be a number from 1 to 65535");
+      } else if (key.str() == "addressing") {
+        auto mode = value.value<std::string>();
+        if (mode && (*mode == "byte" || *mode == "word" || *mode == "byte-offset"))
+          out_.config.addressing = *mode;
+        else
+          bad_value(value, "'addressing' must be \"byte\", \"word\" or \"byte-offset\"");
       } else {
-        unknown(key, "[target]", "max_string_length");
+        unknown(key, "[target]", "max_string_length, addressing");
       }
     }
   }

@@ -33,6 +33,10 @@ struct ProjectConfig {
   // Per-code severity; nullopt turns the code off.
   std::map<std::string, std::optional<Severity>> severity_overrides;
   uint32_t max_string_length = 255;  // [target] longest STRING(n) the target allows
+  // [target] addressing: how %I/%Q/%M numbers map to bytes, "byte" (CODESYS V3: %MW1 = bytes
+  // 2..3, bits 0..7), "word" (word.bit, bits 0..15) or "byte-offset" (%MW1 = bytes 1..2);
+  // empty: the profile's.
+  std::string addressing;
 };
 
 struct LoadedConfig {

@@ -31,6 +31,20 @@ struct ExprInfo {
   bool read_only_output = false;     // an output of another FB instance
 };
 
+// One argument of a call: `name := value`, `name => value`, or a value by position. IL passes
+// the current result as an argument that has no syntax node of its own: `typed` holds its type
+// and `value` the instruction it stands for (for the messages).
+struct CallArgument {
+  SyntaxNode node;   // the whole argument
+  SyntaxNode name;   // the formal parameter; null for a positional argument
+  SyntaxNode value;  // the actual value, or the variable an output goes to
+  bool output = false;
+  std::optional<ExprInfo> typed;
+};
+
+// The arguments of an argument_list node (OpenPCS outputs after '|' included).
+std::vector<CallArgument> call_arguments(SyntaxNode argument_list);
+
 class BodyChecker {
  public:
   BodyChecker(const ProjectModel& model, const Symbol& pou, std::vector<Diagnostic>& out);
@@ -58,9 +72,12 @@ class BodyChecker {
   // call_checker.cpp
   ExprInfo type_call(SyntaxNode call, int depth);
   ExprInfo check_call_arguments(SyntaxNode call, const Symbol* callee, bool instance_call, int depth);
+  void check_one_generic_type(const Symbol* callee, const std::vector<ExprInfo>& arguments,
+                              const std::vector<SyntaxNode>& where);
   const Type* bind_generic_result(const Symbol* callee, const std::vector<ExprInfo>& arguments);
 
   // statement_checker.cpp
+  void check_body(SyntaxNode body);  // a statement list, IL body or SFC network
   void check_statement_list(SyntaxNode list);
   void check_statement(SyntaxNode statement);
   void check_assignment(SyntaxNode statement);
@@ -78,6 +95,18 @@ class BodyChecker {
   void check_conversion(const ExprInfo& value, const Type* target, SyntaxNode where);
   void report(std::string_view code, std::string message, TextRange range, std::string help = {},
               std::vector<DiagnosticLabel> labels = {});
+
+  // Pieces of expressions and statements for bodies that are not ST (the IL checker).
+  // The result of `op operand` / `left op right` for typed operands (E104 when undefined);
+  // `shown` is the operator as written, for messages (IL: ADD for '+').
+  ExprInfo unary_result(std::string_view op, const ExprInfo& operand, TextRange range);
+  ExprInfo binary_result(std::string_view op, const ExprInfo& left, const ExprInfo& right, SyntaxNode right_node,
+                         TextRange range, std::string_view shown = {});
+  // Whether `target` may be written (E401/E402/E403 when not, reported at `where`).
+  bool check_assignment_target(const ExprInfo& target, SyntaxNode where);
+  // A call of `callee` with these arguments; `call` is where the call is written.
+  ExprInfo check_arguments(const Symbol* callee, bool instance_call, const std::vector<CallArgument>& arguments,
+                           SyntaxNode call, int depth);
 
  private:
   const ProjectModel& model_;

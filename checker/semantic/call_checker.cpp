@@ -5,6 +5,7 @@
 
 #include "checker/semantic/body_checker.hpp"
 #include "checker/semantic/builtins.hpp"
+#include "checker/semantic/type_size.hpp"
 #include "parser/diagnostic_codes.hpp"
 
 namespace rung::check {
@@ -49,12 +50,7 @@ ExprInfo BodyChecker::type_call(SyntaxNode call, int depth) {
   ExprInfo unknown{.type = types_.unknown()};
   if (!function) return unknown;
   auto type_arguments_only = [&]() {
-    if (!arguments) return;
-    for (uint32_t i = 0; i < arguments.named_child_count(); ++i) {
-      SyntaxNode argument = arguments.named_child(i);
-      if (argument.kind() == "argument") type_expression(argument.child_by_field("value"), depth + 1);
-      if (argument.kind() == "output_argument") type_expression(argument.child_by_field("target"), depth + 1);
-    }
+    for (const CallArgument& argument : call_arguments(arguments)) type_expression(argument.value, depth + 1);
   };
   if (function.kind() == "identifier") {
     const std::string_view name = function.text();
@@ -124,7 +120,37 @@ ExprInfo BodyChecker::type_call(SyntaxNode call, int depth) {
 }
 
 ExprInfo BodyChecker::check_call_arguments(SyntaxNode call, const Symbol* callee, bool instance_call, int depth) {
-  SyntaxNode arguments = call.child_by_field("arguments");
+  return check_arguments(callee, instance_call, call_arguments(call.child_by_field("arguments")), call, depth);
+}
+
+std::vector<CallArgument> call_arguments(SyntaxNode arguments) {
+  std::vector<CallArgument> result;
+  if (!arguments) return result;
+  bool after_bar = false;
+  for (uint32_t i = 0; i < arguments.child_count(); ++i) {
+    SyntaxNode child = arguments.child(i);
+    if (!child.is_named()) {
+      after_bar = after_bar || child.text() == "|";
+      continue;
+    }
+    const bool output = child.kind() == "output_argument";
+    if (!output && child.kind() != "argument") continue;
+    CallArgument argument{.node = child,
+                          .name = child.child_by_field("name"),
+                          .value = child.child_by_field(output ? "target" : "value"),
+                          .output = output};
+    // OpenPCS: after '|' come the outputs, written `actual := formal` (003.md L4518-4523).
+    if (after_bar && !output && argument.name && argument.value) {
+      std::swap(argument.name, argument.value);
+      argument.output = true;
+    }
+    result.push_back(argument);
+  }
+  return result;
+}
+
+ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, const std::vector<CallArgument>& arguments,
+                                      SyntaxNode call, int depth) {
   const std::vector<Parameter> parameters = parameters_of(callee);
   const bool is_function = callee->kind == SymbolKind::Function || callee->kind == SymbolKind::Method;
   ExprInfo result{.type = types_.void_type()};
@@ -132,6 +158,7 @@ ExprInfo BodyChecker::check_call_arguments(SyntaxNode call, const Symbol* callee
   if (callee->has(kLibrary) && callee->kind == SymbolKind::Function && !callee->result_type) result.type = types_.unknown();
 
   std::vector<ExprInfo> bound;  // arguments given to parameters of the result's generic type
+  std::vector<SyntaxNode> bound_where;
   std::vector<const Parameter*> given;
   size_t positional = 0;
   bool extensible_seen = false;
@@ -141,83 +168,125 @@ ExprInfo BodyChecker::check_call_arguments(SyntaxNode call, const Symbol* callee
     if (parameter.symbol->has(kExtensible)) extensible_seen = true;
   }
   const bool library_function = callee->has(kLibrary) && callee->kind == SymbolKind::Function;
-  if (arguments) {
-    for (uint32_t i = 0; i < arguments.named_child_count(); ++i) {
-      SyntaxNode argument = arguments.named_child(i);
-      const bool output = argument.kind() == "output_argument";
-      if (!output && argument.kind() != "argument") continue;
-      SyntaxNode name = argument.child_by_field("name");
-      SyntaxNode value = argument.child_by_field(output ? "target" : "value");
-      ExprInfo value_info = value ? type_expression(value, depth + 1) : ExprInfo{.type = types_.unknown()};
-      const Parameter* parameter = nullptr;
-      if (name) {
-        if (is_en_eno(name.text())) continue;
-        parameter = find_parameter(parameters, name.text());
-        if (!parameter) {
-          // Standard functions: vendors name the parameters differently (IEC LEFT(IN, L), CODESYS
-          // and TwinCAT LEFT(STR, SIZE)); extensible ones take IN3, IN4 ... beyond IN2.
-          if (library_function) continue;
-          std::vector<std::string_view> names;
-          for (const auto& p : parameters) names.push_back(p.symbol->name);
-          const std::string_view suggestion = closest_name(name.text(), names);
-          report(codes::kUnknownParameter, fmt::format("'{}' has no parameter '{}'", callee->name, name.text()),
-                 name.range(), suggestion.empty() ? std::string() : fmt::format("did you mean '{}'?", suggestion));
-          continue;
-        }
-        for (const Parameter* previous : given) {
-          if (previous == parameter) {
-            report(codes::kDuplicateParameter, fmt::format("parameter '{}' is given twice", name.text()), name.range());
-          }
-        }
-        given.push_back(parameter);
-        if (output && parameter->section != ast::VarSection::Output) {
-          report(codes::kWrongArgumentDirection,
-                 fmt::format("'{}' is an input; use '{} := value'", parameter->symbol->name, parameter->symbol->name),
-                 argument.range());
-          continue;
-        }
-        if (!output && parameter->section == ast::VarSection::Output) {
-          report(codes::kWrongArgumentDirection,
-                 fmt::format("'{}' is an output; use '{} => variable'", parameter->symbol->name, parameter->symbol->name),
-                 argument.range());
-          continue;
-        }
-      } else {
-        if (positional < inputs.size()) {
-          parameter = inputs[positional];
-        } else if (!extensible_seen && !inputs.empty() && !instance_call) {
-          report(codes::kTooManyArguments,
-                 fmt::format("'{}' takes {} argument(s), more are given", callee->name, inputs.size()), argument.range());
-        }
-        ++positional;
-        if (parameter) given.push_back(parameter);
-      }
-      if (!parameter || !value) continue;
-      const Type* parameter_type = model_.type_of(parameter->symbol);
-      if (parameter->section == ast::VarSection::InOut && !value_info.assignable && !value_info.value &&
-          !value_info.type->is_unknown()) {
-        report(codes::kInOutNotAssignable,
-               fmt::format("'{}' is VAR_IN_OUT: pass a variable, not an expression", parameter->symbol->name),
-               value.range());
-      } else if (parameter->section == ast::VarSection::InOut && value_info.value && value_info.untyped_literal) {
-        report(codes::kInOutNotAssignable,
-               fmt::format("'{}' is VAR_IN_OUT: pass a variable, not a constant", parameter->symbol->name), value.range());
-      }
-      if (output) {
-        // The output's value flows into the target variable.
-        if (value_info.assignable || value_info.type->is_unknown()) {
-          check_conversion(ExprInfo{.type = parameter_type}, value_info.type, value);
-        }
+  for (const CallArgument& argument : arguments) {
+    const bool output = argument.output;
+    SyntaxNode name = argument.name;
+    SyntaxNode value = argument.value;
+    ExprInfo value_info = argument.typed        ? *argument.typed
+                          : value ? type_expression(value, depth + 1)
+                                  : ExprInfo{.type = types_.unknown()};
+    const Parameter* parameter = nullptr;
+    if (name) {
+      if (is_en_eno(name.text())) continue;
+      parameter = find_parameter(parameters, name.text());
+      if (!parameter) {
+        // Standard functions: vendors name the parameters differently (IEC LEFT(IN, L), CODESYS
+        // and TwinCAT LEFT(STR, SIZE)); extensible ones take IN3, IN4 ... beyond IN2.
+        if (library_function) continue;
+        std::vector<std::string_view> names;
+        for (const auto& p : parameters) names.push_back(p.symbol->name);
+        const std::string_view suggestion = closest_name(name.text(), names);
+        report(codes::kUnknownParameter, fmt::format("'{}' has no parameter '{}'", callee->name, name.text()),
+               name.range(), suggestion.empty() ? std::string() : fmt::format("did you mean '{}'?", suggestion));
         continue;
       }
-      check_conversion(value_info, parameter_type, value);
-      if (callee->result_type && parameter_type == callee->result_type && parameter_type->kind == TypeKind::Generic) {
-        bound.push_back(value_info);
+      for (const Parameter* previous : given) {
+        if (previous == parameter) {
+          report(codes::kDuplicateParameter, fmt::format("parameter '{}' is given twice", name.text()), name.range());
+        }
       }
+      given.push_back(parameter);
+      if (output && parameter->section != ast::VarSection::Output) {
+        report(codes::kWrongArgumentDirection,
+               fmt::format("'{}' is an input; use '{} := value'", parameter->symbol->name, parameter->symbol->name),
+               argument.node.range());
+        continue;
+      }
+      if (!output && parameter->section == ast::VarSection::Output) {
+        report(codes::kWrongArgumentDirection,
+               fmt::format("'{}' is an output; use '{} => variable'", parameter->symbol->name, parameter->symbol->name),
+               argument.node.range());
+        continue;
+      }
+    } else {
+      if (positional < inputs.size()) {
+        parameter = inputs[positional];
+      } else if (!extensible_seen && !inputs.empty() && !instance_call) {
+        report(codes::kTooManyArguments,
+               fmt::format("'{}' takes {} argument(s), more are given", callee->name, inputs.size()), argument.node.range());
+      }
+      ++positional;
+      if (parameter) given.push_back(parameter);
+    }
+    if (!parameter || !value) continue;
+    const Type* parameter_type = model_.type_of(parameter->symbol);
+    if (parameter->section == ast::VarSection::InOut && !value_info.assignable && !value_info.value &&
+        !value_info.type->is_unknown()) {
+      report(codes::kInOutNotAssignable,
+             fmt::format("'{}' is VAR_IN_OUT: pass a variable, not an expression", parameter->symbol->name),
+             value.range());
+    } else if (parameter->section == ast::VarSection::InOut && value_info.value && value_info.untyped_literal) {
+      report(codes::kInOutNotAssignable,
+             fmt::format("'{}' is VAR_IN_OUT: pass a variable, not a constant", parameter->symbol->name), value.range());
+    }
+    if (output) {
+      // The output's value flows into the target variable.
+      if (value_info.assignable || value_info.type->is_unknown()) {
+        check_conversion(ExprInfo{.type = parameter_type}, value_info.type, value);
+      }
+      continue;
+    }
+    check_conversion(value_info, parameter_type, value);
+    if (callee->result_type && parameter_type == callee->result_type && parameter_type->kind == TypeKind::Generic) {
+      bound.push_back(value_info);
+      bound_where.push_back(value);
     }
   }
-  if (is_function && result.type->kind == TypeKind::Generic) result.type = bind_generic_result(callee, bound);
+  // A VAR_IN_OUT is a reference: every call must connect it (OpenPCS S5033; CODESYS, TwinCAT).
+  if (!callee->has(kLibrary)) {
+    for (const Parameter& parameter : parameters) {
+      if (parameter.section != ast::VarSection::InOut) continue;
+      if (std::find(given.begin(), given.end(), &parameter) != given.end()) continue;
+      report(codes::kMissingParameter,
+             fmt::format("VAR_IN_OUT '{}' of '{}' is not connected", parameter.symbol->name, callee->name), call.range(),
+             fmt::format("pass a variable: {} := ...", parameter.symbol->name));
+    }
+  }
+  if (is_function && result.type->kind == TypeKind::Generic) {
+    if (!model_.profile().generic_arguments_widen) check_one_generic_type(callee, bound, bound_where);
+    result.type = bind_generic_result(callee, bound);
+  }
   return result;
+}
+
+void BodyChecker::check_one_generic_type(const Symbol* callee, const std::vector<ExprInfo>& arguments,
+                                         const std::vector<SyntaxNode>& where) {
+  // Strict IEC (OpenPCS): all arguments of one generic type T have the same type, and an untyped
+  // constant adapts to it only within its kind: 1 becomes any integer or bit string, not REAL
+  // (S5027: LD 1 / MAX rReal).
+  const Type* typed = nullptr;
+  for (const ExprInfo& argument : arguments) {
+    if (!argument.untyped_literal && !arithmetic_type(argument.type)->is_unknown()) {
+      typed = argument.type;
+      break;
+    }
+  }
+  if (!typed) return;
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    const ExprInfo& argument = arguments[i];
+    const Type* type = arithmetic_type(argument.type);
+    if (type->is_unknown() || type->kind == TypeKind::Generic) continue;
+    const bool fits = argument.untyped_literal
+                          ? (is_any_int_or_bit(type) && is_any_int_or_bit(arithmetic_type(typed))) ||
+                                (type->kind == TypeKind::Real && arithmetic_type(typed)->kind == TypeKind::Real) ||
+                                convertibility(argument.type, typed, model_.profile()) == Convertibility::Same
+                          : convertibility(argument.type, typed, model_.profile()) == Convertibility::Same;
+    if (fits) continue;
+    report(codes::kTypeMismatch,
+           fmt::format("{} takes arguments of one type: {} and {} differ", callee->name, typed->name, argument.type->name),
+           where[i].range(), fmt::format("convert explicitly, e.g. {}_TO_{}()", argument.type->name, typed->name));
+    return;
+  }
 }
 
 const Type* BodyChecker::bind_generic_result(const Symbol* callee, const std::vector<ExprInfo>& arguments) {

@@ -74,15 +74,6 @@ std::optional<AddressSize> size_of(char c) {
   }
 }
 
-char area_letter(AddressArea area) {
-  switch (area) {
-    case AddressArea::Input: return 'I';
-    case AddressArea::Output: return 'Q';
-    case AddressArea::Memory: return 'M';
-  }
-  return '?';
-}
-
 char size_letter(AddressSize size) {
   switch (size) {
     case AddressSize::None:
@@ -181,6 +172,16 @@ void place_unit(DirectAddress& address, AddressingMode mode) {
 }
 
 }  // namespace
+
+char area_letter(AddressArea area) {
+  switch (area) {
+    case AddressArea::Input: return 'I';
+    case AddressArea::Output: return 'Q';
+    case AddressArea::Memory: return 'M';
+  }
+  return '?';
+}
+
 
 uint32_t DirectAddress::size_bits() const {
   switch (size) {

@@ -21,6 +21,7 @@
 namespace rung::check {
 
 enum class AddressArea { Input, Output, Memory };  // %I, %Q, %M
+char area_letter(AddressArea area);  // I, Q or M
 
 // The size prefix. None is written without a letter and means a bit, like X (002 L18257-18271:
 // %Q7.5 = %QX7.5; 003 L1176: %I0.0 = %IX0.0).

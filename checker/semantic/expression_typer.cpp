@@ -109,6 +109,10 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
     if (kind == "date_literal") info.type = types_.elementary(long_variant ? "LDATE" : "DATE");
     if (kind == "time_of_day_literal") info.type = types_.elementary(long_variant ? "LTOD" : "TOD");
     if (kind == "date_and_time_literal") info.type = types_.elementary(long_variant ? "LDT" : "DT");
+    if (const std::string problem = point_in_time_literal_problem(text); !problem.empty()) {
+      report(codes::kLiteralOutOfRange, fmt::format("invalid {} literal '{}': {}", info.type->name, text, problem),
+             literal.range());
+    }
     return info;
   }
   if (kind == "time_literal") {
@@ -116,9 +120,14 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
     auto value = parse_duration_literal(literal.text(), &problem);
     const std::string_view text = literal.text();
     info.type = types_.elementary(!text.empty() && (text[0] == 'L' || text[0] == 'l') ? "LTIME" : "TIME");
+    // TIME is 32 bits of milliseconds: T#49d17h2m47s295ms (CODESYS writes T#71582m47s295ms).
+    constexpr __int128 kMaxTimeNanoseconds = static_cast<__int128>(0xFFFFFFFFll) * 1'000'000;
     if (!value && !problem.empty()) {
       report(codes::kLiteralOutOfRange, fmt::format("invalid duration '{}': {}", text, problem), literal.range(),
-             "write the units from the largest to the smallest, e.g. T#1d2h3m4s5ms");
+             "write the units from the largest to the smallest, the last one within its range: T#1d2h3m4s5ms");
+    } else if (value && info.type->name == "TIME" && (*value > kMaxTimeNanoseconds || *value < -kMaxTimeNanoseconds)) {
+      report(codes::kLiteralOutOfRange, fmt::format("'{}' does not fit in a TIME (at most T#49d17h2m47s295ms)", text),
+             literal.range(), "use LTIME for longer durations");
     } else if (value) {
       info.value = ConstValue::of_duration(*value);
     }
@@ -253,6 +262,19 @@ ExprInfo BodyChecker::type_identifier(SyntaxNode identifier) {
 void BodyChecker::report_undeclared(SyntaxNode name) {
   const std::vector<std::string_view> candidates = model_.visible_names(&pou_);
   const std::string_view suggestion = closest_name(name.text(), candidates);
+  // `TcUnit.RUN()`, `Tc2_System.F_GetTime()`, `E_State.Idle`: an unknown qualifier with no close
+  // local name is most likely a library (or its enum) that rung has no stubs for. Such names are
+  // E002, the one code for "add the library's stubs", so they can be counted and silenced apart
+  // from real typos.
+  SyntaxNode parent = name.parent();
+  if (suggestion.empty() && parent && parent.kind() == "member_expression" &&
+      parent.child_by_field("object") == name) {
+    report(codes::kUnknownLibraryName, fmt::format("unknown name '{}' (a library namespace, global list or type)", name.text()),
+           name.range(),
+           "if it comes from a vendor library, add that library's stubs (the 'libraries' list under [project] in "
+           "rung.toml); otherwise declare it");
+    return;
+  }
   report(codes::kUndeclaredName, fmt::format("'{}' is not declared", name.text()), name.range(),
          suggestion.empty() ? "declare it in a VAR section or a global variable list"
                             : fmt::format("did you mean '{}'?", suggestion));
@@ -269,7 +291,9 @@ ExprInfo BodyChecker::type_member(SyntaxNode expression, int depth) {
   // Bit access: w.3, and CODESYS constant bit numbers w.cBit.
   if (member_node.kind() == "integer_literal") {
     const Type* base = arithmetic_type(object.type);
-    if (!base->is_unknown() && is_any_int_or_bit(base)) {
+    // IEC: bits of bit strings only (OpenPCS S5031: not of a DINT); CODESYS: of integers too.
+    const bool bits_of_integer = is_integer(base) && !model_.profile().bits_and_integers_mix;
+    if (!base->is_unknown() && is_any_int_or_bit(base) && !bits_of_integer) {
       auto bit = parse_integer_literal(member);
       if (bit && base->bits && *bit >= base->bits) {
         report(codes::kIndexOutOfRange, fmt::format("bit {} does not exist in {} ({} bits)", member, base->name, base->bits),
@@ -455,11 +479,17 @@ ExprInfo BodyChecker::type_unary(SyntaxNode expression, int depth) {
     result.type = literal_type(value, false);
     return result;
   }
+  return unary_result(op, operand, expression.range());
+}
+
+// NOT, unary - and + applied to a typed operand (also IL NOT and the N modifier).
+ExprInfo BodyChecker::unary_result(std::string_view op, const ExprInfo& operand, TextRange range) {
+  ExprInfo result{.type = operand.type};
   const Type* type = arithmetic_type(operand.type);
   if (type->is_unknown() || type->kind == TypeKind::Generic) return result;
   if (op == "NOT") {
     if (type->kind != TypeKind::Bool && !is_any_int_or_bit(type)) {
-      report(codes::kInvalidOperand, fmt::format("NOT is not defined for {}", operand.type->name), expression.range());
+      report(codes::kInvalidOperand, fmt::format("NOT is not defined for {}", operand.type->name), range);
       result.type = types_.unknown();
     }
     if (operand.value && operand.value->kind == ConstValue::Kind::Bool) {
@@ -469,7 +499,7 @@ ExprInfo BodyChecker::type_unary(SyntaxNode expression, int depth) {
     if (!is_numeric(type) && type->kind != TypeKind::Duration &&
         !(type->kind == TypeKind::Bit && model_.profile().bits_and_integers_mix)) {
       report(codes::kInvalidOperand, fmt::format("unary '{}' is not defined for {}", op, operand.type->name),
-             expression.range());
+             range);
       result.type = types_.unknown();
     }
   }
@@ -493,8 +523,17 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
       return result;
     }
   }
+  return binary_result(op, left, right, right_node, expression.range());
+}
+
+// The type of `left op right` for typed operands (also IL ADD, GT, AND ...: `shown` is the
+// operator as written there, for the messages).
+ExprInfo BodyChecker::binary_result(std::string_view op, const ExprInfo& left, const ExprInfo& right,
+                                   SyntaxNode right_node, TextRange range, std::string_view shown) {
+  ExprInfo result{.type = types_.unknown()};
+  const std::string_view name = shown.empty() ? op : shown;
   if ((op == "/" || op == "MOD") && right.value && right.value->is_number() && right.value->as_real() == 0) {
-    report(codes::kDivisionByZero, fmt::format("division by zero ('{}' by a constant 0)", op), right_node.range());
+    report(codes::kDivisionByZero, fmt::format("division by zero ('{}' by a constant 0)", name), right_node.range());
   } else if ((op == "/" || op == "MOD") && !right.value) {
     auto constant = model_.constant_value(right_node, &pou_);
     if (constant && constant->is_number() && constant->as_real() == 0) {
@@ -507,6 +546,15 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
   const bool unknown = a->is_unknown() || b->is_unknown() || a->kind == TypeKind::Generic || b->kind == TypeKind::Generic;
   if (is_comparison(op)) {
     result.type = types_.elementary("BOOL");
+    // Structures and arrays have no order and no '=' (OpenPCS S3028/S3030: LD s1 / GT s2).
+    auto aggregate = [](const Type* t) {
+      return t->kind == TypeKind::Struct || t->kind == TypeKind::Union || t->kind == TypeKind::Array;
+    };
+    if (!unknown && (aggregate(a) || aggregate(b))) {
+      report(codes::kInvalidOperand, fmt::format("cannot compare {} with {}", left.type->name, right.type->name), range,
+             "compare the members one by one");
+      return result;
+    }
     if (!unknown) {
       const bool comparable =
           (is_numeric(a) || a->kind == TypeKind::Bit) == (is_numeric(b) || b->kind == TypeKind::Bit) ||
@@ -516,7 +564,7 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
         if (convertibility(left.type, right.type, model_.profile()) == Convertibility::Never &&
             convertibility(right.type, left.type, model_.profile()) == Convertibility::Never) {
           report(codes::kInvalidOperand,
-                 fmt::format("cannot compare {} with {}", left.type->name, right.type->name), expression.range());
+                 fmt::format("cannot compare {} with {}", left.type->name, right.type->name), range);
         }
       }
     }
@@ -545,7 +593,7 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
       if (model_.profile().bits_and_integers_mix) return result;
     }
     report(codes::kInvalidOperand,
-           fmt::format("{} is not defined for {} and {}", op, left.type->name, right.type->name), expression.range(),
+           fmt::format("{} is not defined for {} and {}", name, left.type->name, right.type->name), range,
            "use BOOL operands, or bit strings/integers of matching width");
     result.type = types_.unknown();
     return result;
@@ -564,7 +612,9 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
       result.type = a;
     } else if (bk == TypeKind::Duration && is_numeric(a) && op == "*") {
       result.type = b;
-    } else if (is_time_point(ak) && bk == TypeKind::Duration && (op == "+" || op == "-")) {
+    } else if (is_time_point(ak) && bk == TypeKind::Duration && (op == "+" || op == "-") &&
+               (ak != TypeKind::Date || model_.profile().time_and_integers_mix)) {
+      // IEC has no DATE +/- TIME (a DATE counts days; table 30 of the 2nd ed.; OpenPCS S3020).
       result.type = a;
     } else if (is_time_point(ak) && ak == bk && op == "-") {
       result.type = types_.elementary("TIME");
@@ -574,7 +624,7 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
       result.type = types_.elementary("DINT");
     } else {
       report(codes::kInvalidOperand,
-             fmt::format("'{}' is not defined for {} and {}", op, left.type->name, right.type->name), expression.range());
+             fmt::format("'{}' is not defined for {} and {}", name, left.type->name, right.type->name), range);
     }
     return result;
   }
@@ -584,7 +634,7 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
   }
   if (op == "MOD" && (ak == TypeKind::Real || bk == TypeKind::Real)) {
     report(codes::kInvalidOperand, fmt::format("MOD needs integers, not {} and {}", left.type->name, right.type->name),
-           expression.range(), "use a - TRUNC(a / b) * b for REAL");
+           range, "use a - TRUNC(a / b) * b for REAL");
     return result;
   }
   const bool a_num = is_numeric(a) || (ak == TypeKind::Bit && model_.profile().bits_and_integers_mix);
@@ -595,7 +645,7 @@ ExprInfo BodyChecker::type_binary(SyntaxNode expression, int depth) {
       return result;
     }
     report(codes::kInvalidOperand,
-           fmt::format("'{}' is not defined for {} and {}", op, left.type->name, right.type->name), expression.range(),
+           fmt::format("'{}' is not defined for {} and {}", name, left.type->name, right.type->name), range,
            ak == TypeKind::Bool || bk == TypeKind::Bool ? "BOOL is not a number: use BOOL_TO_INT()" : std::string());
     return result;
   }

@@ -6,6 +6,7 @@
 
 #include "checker/constant/const_eval.hpp"
 #include "checker/semantic/body_checker.hpp"
+#include "checker/semantic/il_checker.hpp"
 #include "parser/diagnostic_codes.hpp"
 
 namespace rung::check {
@@ -18,7 +19,20 @@ void BodyChecker::report(std::string_view code, std::string message, TextRange r
 }
 
 void BodyChecker::check() {
-  SyntaxNode body = pou_.node.child_by_field("body");
+  if (pou_.node.kind() == "source_file") {
+    // A snippet's statements (see Collector::add_snippet): possibly several runs of them.
+    for (uint32_t i = 0; i < pou_.node.named_child_count(); ++i) {
+      SyntaxNode child = pou_.node.named_child(i);
+      if (child.kind() == "statement_list" || child.kind() == "il_body" || child.kind() == "sfc_network") {
+        check_body(child);
+      }
+    }
+    return;
+  }
+  check_body(pou_.node.child_by_field("body"));
+}
+
+void BodyChecker::check_body(SyntaxNode body) {
   if (!body) return;
   if (body.kind() == "sfc_network") {
     for (uint32_t i = 0; i < body.named_child_count(); ++i) {
@@ -34,16 +48,25 @@ void BodyChecker::check() {
         auto value = condition ? literal_value(condition) : std::nullopt;
         const bool bit_literal = value && value->is_integer() && (value->integer == 0 || value->integer == 1);
         if (condition && !bit_literal) check_condition(condition);
+        if (SyntaxNode code = child.child_by_field("body"); code && code.kind() == "il_body") {
+          IlChecker(*this, model_, pou_).check(code, /*transition=*/true);
+        }
       } else if (child.kind() == "sfc_action_block") {
         if (SyntaxNode statements = child.child_by_field("body"); statements && statements.kind() == "statement_list") {
           collect_labels(statements);
           check_statement_list(statements);
+        } else if (statements && statements.kind() == "il_body") {
+          IlChecker(*this, model_, pou_).check(statements);
         }
       }
     }
     return;
   }
-  if (body.kind() != "statement_list") return;  // IL: checked by its own pass (not yet)
+  if (body.kind() == "il_body") {
+    IlChecker(*this, model_, pou_).check(body, /*transition=*/pou_.kind == SymbolKind::Transition);
+    return;
+  }
+  if (body.kind() != "statement_list") return;
   collect_labels(body);
   check_statement_list(body);
 }
@@ -204,43 +227,9 @@ void BodyChecker::check_assignment(SyntaxNode statement) {
   } else {
     value = type_expression(right, 0);
   }
-  if (!left) return;
-  // What may stand left of ':='.
-  if (target.symbol && target.symbol->kind == SymbolKind::Variable) {
-    if (target.symbol->has(kConstant)) {
-      report(codes::kAssignToConstant, fmt::format("'{}' is a CONSTANT and cannot be assigned", target.symbol->name),
-             left.range(), {}, {{target.symbol->name_range, "declared CONSTANT here"}});
-      return;
-    }
-    if (target.read_only_output) {
-      report(codes::kAssignToInput,
-             fmt::format("'{}' is an output of the instance; only the function block itself writes it", left.text()),
-             left.range(), "write an input of the instance instead, or copy the value into a variable of your own");
-      return;
-    }
-    for (const Symbol* variable : for_variables_) {
-      if (variable == target.symbol) {
-        report(codes::kForVariableModified,
-               fmt::format("the FOR variable '{}' is assigned inside its loop", target.symbol->name), left.range(),
-               "use WHILE if the loop needs to change its own counter");
-      }
-    }
-  } else if (target.symbol && is_pou_kind(target.symbol->kind) && inside(*target.symbol)) {
-    // F := value inside F (and a property's GET) sets the result.
-  } else if (target.symbol && target.symbol->kind == SymbolKind::Property) {
-    // Writing a property calls SET; a property without SET is read-only.
-    if (!target.symbol->own_member("SET") && target.symbol->own_member("GET")) {
-      report(codes::kAssignToInput, fmt::format("property '{}' has no SET accessor", target.symbol->name), left.range());
-      return;
-    }
-  } else if (!target.assignable && !target.type->is_unknown()) {
-    report(codes::kNotAssignable, fmt::format("'{}' is not a valid assignment target", left.text()), left.range(),
-           "only variables (and their elements, members, dereferenced pointers) can be assigned");
-    return;
-  } else if (target.names_type || target.names_namespace) {
-    report(codes::kNotAssignable, fmt::format("'{}' is not a valid assignment target", left.text()), left.range());
-    return;
-  }
+  // With a syntax error inside, what parsed is a guess: names are checked, the rest would be noise.
+  if (!left || statement.has_error()) return;
+  if (!check_assignment_target(target, left)) return;
   if (operator_text == "S=" || operator_text == "R=") {
     if (!target.type->is_unknown() && arithmetic_type(target.type)->kind != TypeKind::Bool) {
       report(codes::kTypeMismatch, fmt::format("{} needs a BOOL target, not {}", operator_text, target.type->name),
@@ -258,6 +247,46 @@ void BodyChecker::check_assignment(SyntaxNode statement) {
   }
   if (operator_text == "?=") return;  // TwinCAT assignment attempt: any interface/reference
   check_conversion(value, target.type, right);
+}
+
+// What may stand left of ':=' (and be the target of IL ST, S and R).
+bool BodyChecker::check_assignment_target(const ExprInfo& target, SyntaxNode where) {
+  if (target.symbol && target.symbol->kind == SymbolKind::Variable) {
+    if (target.symbol->has(kConstant)) {
+      report(codes::kAssignToConstant, fmt::format("'{}' is a CONSTANT and cannot be assigned", target.symbol->name),
+             where.range(), {}, {{target.symbol->name_range, "declared CONSTANT here"}});
+      return false;
+    }
+    if (target.read_only_output) {
+      report(codes::kAssignToInput,
+             fmt::format("'{}' is an output of the instance; only the function block itself writes it", where.text()),
+             where.range(), "write an input of the instance instead, or copy the value into a variable of your own");
+      return false;
+    }
+    for (const Symbol* variable : for_variables_) {
+      if (variable == target.symbol) {
+        report(codes::kForVariableModified,
+               fmt::format("the FOR variable '{}' is assigned inside its loop", target.symbol->name), where.range(),
+               "use WHILE if the loop needs to change its own counter");
+      }
+    }
+  } else if (target.symbol && is_pou_kind(target.symbol->kind) && inside(*target.symbol)) {
+    // F := value inside F (and a property's GET) sets the result.
+  } else if (target.symbol && target.symbol->kind == SymbolKind::Property) {
+    // Writing a property calls SET; a property without SET is read-only.
+    if (!target.symbol->own_member("SET") && target.symbol->own_member("GET")) {
+      report(codes::kAssignToInput, fmt::format("property '{}' has no SET accessor", target.symbol->name), where.range());
+      return false;
+    }
+  } else if (!target.assignable && !target.type->is_unknown()) {
+    report(codes::kNotAssignable, fmt::format("'{}' is not a valid assignment target", where.text()), where.range(),
+           "only variables (and their elements, members, dereferenced pointers) can be assigned");
+    return false;
+  } else if (target.names_type || target.names_namespace) {
+    report(codes::kNotAssignable, fmt::format("'{}' is not a valid assignment target", where.text()), where.range());
+    return false;
+  }
+  return true;
 }
 
 void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, SyntaxNode where) {

@@ -34,6 +34,14 @@ SymbolKind symbol_kind_of(ast::PouKind kind) {
   return SymbolKind::Program;
 }
 
+// Whether a POU is closed by its END_PROGRAM / END_FUNCTION_BLOCK / ... keyword.
+bool has_end_keyword(SyntaxNode pou) {
+  const uint32_t count = pou.child_count();
+  if (count == 0) return false;
+  const SyntaxNode last = pou.child(count - 1);
+  return !last.is_named() && last.kind().starts_with("END_");
+}
+
 uint32_t modifier_flags(const std::vector<std::string_view>& modifiers) {
   uint32_t flags = 0;
   for (std::string_view modifier : modifiers) {
@@ -67,7 +75,10 @@ class Collector {
 
   void run(SyntaxNode root) {
     const ast::Outline outline = ast::outline(root);
-    for (const ast::Pou& pou : outline.pous) out_.top_level.push_back(add_pou(pou, nullptr));
+    for (const ast::Pou& pou : outline.pous) {
+      out_.top_level.push_back(add_pou(pou, nullptr));
+      if (pou.kind() == ast::PouKind::Program) add_program_globals(pou, *out_.top_level.back());
+    }
     for (const ast::TypeDeclaration& type : outline.types) out_.top_level.push_back(add_type(type, nullptr));
     for (const ast::VarBlock& block : outline.global_blocks) add_global_block(block);
     for (SyntaxNode configuration : outline.configurations) {
@@ -81,16 +92,41 @@ class Collector {
         for (uint32_t i = 0; i < node.named_child_count(); ++i) {
           SyntaxNode child = node.named_child(i);
           if (child.kind() == "var_block") {
-            if (ast::VarBlock(child).section() == ast::VarSection::Global) add_global_block(ast::VarBlock(child));
+            // VAR_CONFIG entries too: their paths and addresses are checked like declarations.
+            const ast::VarSection section = ast::VarBlock(child).section();
+            if (section == ast::VarSection::Global || section == ast::VarSection::Config) {
+              add_global_block(ast::VarBlock(child));
+            }
           } else if (child.kind() == "resource_declaration") {
             stack.push_back(child);
           }
         }
       }
     }
+    add_snippet(root);
   }
 
  private:
+  // Manuals, forum posts and scratch files show code without a POU header: VAR ... END_VAR and
+  // statements at the top of the file. Such a snippet is checked as the body of an unnamed
+  // PROGRAM, which no other file can name.
+  void add_snippet(SyntaxNode root) {
+    Symbol* snippet = nullptr;
+    for (uint32_t i = 0; i < root.named_child_count(); ++i) {
+      SyntaxNode child = root.named_child(i);
+      const std::string_view kind = child.kind();
+      const bool body = kind == "statement_list" || kind == "il_body" || kind == "sfc_network";
+      const bool locals = kind == "var_block" && ast::VarBlock(child).section() != ast::VarSection::Global &&
+                          ast::VarBlock(child).section() != ast::VarSection::Config;
+      if (!body && !locals) continue;
+      if (!snippet) {
+        snippet = &make(SymbolKind::Program, SyntaxNode(), root, nullptr);
+        out_.top_level.push_back(snippet);
+      }
+      if (locals) add_var_block(*snippet, ast::VarBlock(child));
+    }
+  }
+
   Symbol& make(SymbolKind kind, SyntaxNode name_node, SyntaxNode node, Symbol* owner) {
     Symbol& symbol = out_.storage.emplace_back();
     symbol.kind = kind;
@@ -105,6 +141,22 @@ class Collector {
     }
     if (out_.library) symbol.flags |= kLibrary;
     return symbol;
+  }
+
+  // `b : arrey[0..5] OF INT;` parses as a declaration of type INT after an error, and
+  // `x, y : at%I0.0;` as one of type `at`: the type the recovery found is a guess, and checking against it would only add follow-on errors. Such a
+  // variable gets the Unknown type.
+  static bool type_is_reliable(const ast::VarDeclaration& declaration) {
+    SyntaxNode type = declaration.type();
+    if (!type || type.has_error()) return false;
+    SyntaxNode node = declaration.node();
+    SyntaxNode initial_value = declaration.initial_value();
+    const uint32_t limit = initial_value ? initial_value.begin() : node.end();  // errors in the value do not matter
+    for (uint32_t i = 0; i < node.child_count(); ++i) {
+      SyntaxNode child = node.child(i);
+      if ((child.is_error() || child.is_missing()) && child.begin() < limit) return false;
+    }
+    return true;
   }
 
   // Adds `member` to `owner`'s scope; a second declaration of a name is E003 (first one wins).
@@ -153,14 +205,27 @@ class Collector {
     symbol.type_node = pou.return_type();
     symbol.base_nodes = pou.extends();
     symbol.interface_nodes = pou.implements();
-    for (const ast::VarBlock& block : pou.var_blocks()) add_var_block(symbol, block);
+    for (const ast::VarBlock& block : pou.var_blocks()) {
+      if (block.section() == ast::VarSection::Global && pou.kind() == ast::PouKind::Program && !owner) {
+        continue;  // add_program_globals()
+      }
+      // No POU may declare VAR_CONFIG. After a POU without END_* it starts the next object of
+      // text concatenated from CODESYS objects (a POU, then the GVL with the VAR_CONFIG).
+      if (block.section() == ast::VarSection::Config && !has_end_keyword(pou.node())) {
+        add_global_block(block);
+      } else {
+        add_var_block(symbol, block);
+      }
+    }
     for (const ast::Pou& member : pou.members()) {
       Symbol* child = add_pou(member, &symbol);
       add_member(symbol, *child);
     }
-    // OpenPCS declares POU-local types among the variable blocks.
-    for (SyntaxNode type : pou.node().children_of_kind("type_declaration")) {
-      for (const ast::TypeDeclaration& declared : ast::outline(type).types) add_type(declared, nullptr);
+    // OpenPCS declares POU-local types among the variable blocks. They are members of the POU:
+    // visible only inside it, and in the one namespace of its variables (a variable and a local
+    // type of the same name are E003).
+    for (const ast::TypeDeclaration& declared : ast::outline(pou.node()).types) {
+      add_member(symbol, *add_type(declared, &symbol));
     }
     return &symbol;
   }
@@ -186,7 +251,7 @@ class Collector {
     for (SyntaxNode name : declaration.names()) {
       Symbol& variable = make(SymbolKind::Variable, name, declaration.node(), &owner);
       variable.section = section;
-      variable.type_node = declaration.type();
+      variable.type_node = type_is_reliable(declaration) ? declaration.type() : SyntaxNode();
       variable.location_node = declaration.location();
       variable.attributes = attributes;
       variable.flags |= flags | attribute_flags(attributes);
@@ -214,6 +279,25 @@ class Collector {
       add_member(symbol, enumerator);
     }
     return &symbol;
+  }
+
+  // IEC 61131-3 and OpenPCS let a PROGRAM declare VAR_GLOBAL; other POUs reach those variables
+  // through VAR_EXTERNAL. They become a global list named after the program (added after it, so
+  // the program keeps its name in the project index); CODESYS refuses them (declaration checks,
+  // which recognise such a list by the program around its block).
+  void add_program_globals(const ast::Pou& program, Symbol& program_symbol) {
+    Symbol* list = nullptr;
+    for (const ast::VarBlock& block : program.var_blocks()) {
+      if (block.section() != ast::VarSection::Global) continue;
+      if (!list) {
+        // Owned by the program: its local types and constants are in scope for the declarations.
+        list = &make(SymbolKind::GlobalList, SyntaxNode(), block.node(), &program_symbol);
+        list->name = program_symbol.name;
+        out_.global_lists.push_back(list);
+        out_.top_level.push_back(list);
+      }
+      add_var_block(*list, block);
+    }
   }
 
   void add_global_block(const ast::VarBlock& block) {
@@ -259,13 +343,20 @@ uint64_t interface_hash(const Document& document, SyntaxNode root) {
   while (!stack.empty()) {
     SyntaxNode node = stack.back();
     stack.pop_back();
+    // A body reaches back over the comments and blank lines before its first statement: text
+    // typed there is part of the body edit.
+    uint32_t previous_end = node.begin();
     for (uint32_t i = 0; i < node.named_child_count(); ++i) {
       SyntaxNode child = node.named_child(i);
       const std::string_view kind = child.kind();
       if (kind == "statement_list" || kind == "il_body" || kind == "sfc_network") {
-        bodies.push_back(child.range());
-      } else if (kind.ends_with("_declaration") || kind == "source_file" || kind == "property_accessor" ||
-                 kind == "namespace_declaration") {
+        bodies.push_back({std::min(previous_end, child.begin()), child.end()});
+        continue;
+      }
+      if (kind == "comment" || kind == "pragma") continue;
+      previous_end = child.end();
+      if (kind.ends_with("_declaration") || kind == "source_file" || kind == "property_accessor" ||
+          kind == "namespace_declaration") {
         stack.push_back(child);
       }
     }

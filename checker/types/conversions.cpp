@@ -57,7 +57,9 @@ Convertibility convertibility(const Type* from, const Type* to, const Profile& p
         profile.bits_and_integers_mix && is_bit_string(from)) {
       return Convertibility::Same;
     }
-    if (to->generic == GenericKind::AnyReal && is_integer(from)) return Convertibility::Implicit;
+    if (to->generic == GenericKind::AnyReal && is_integer(from) && profile.generic_arguments_widen) {
+      return Convertibility::Implicit;
+    }
     return Convertibility::Never;
   }
   if (from->kind == TypeKind::Generic) return Convertibility::Same;

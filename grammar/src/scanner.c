@@ -46,6 +46,9 @@ enum TokenType {
   KW_RESOURCE,
   KW_INITIAL_STEP,
   KW_JMP,
+  KW_OPC,
+  IL_SAME_LINE,
+  ARGUMENT_SEMICOLON,
   ERROR_SENTINEL,
   TOKEN_COUNT
 };
@@ -58,6 +61,8 @@ static const char *const SOFT_KEYWORDS[] = {
     "CONFIGURATION", "RESOURCE", "INITIAL_STEP",
     /* MATIEC accepts IL operator names as variables: "JMP := 1;" is an assignment. */
     "JMP",
+    /* OpenPCS var-block qualifier (VAR CONSTANT OPC); elsewhere a name like any other. */
+    "OPC",
 };
 #define SOFT_KEYWORD_COUNT (sizeof(SOFT_KEYWORDS) / sizeof(SOFT_KEYWORDS[0]))
 
@@ -92,57 +97,45 @@ static inline bool is_word_char(int32_t c) { return is_word_start(c) || (c >= '0
 
 static inline int32_t to_upper(int32_t c) { return (c >= 'a' && c <= 'z') ? c - 32 : c; }
 
-/* Scans a "(* ... *)" comment (nested) after the opening "(" was consumed. */
-static bool scan_paren_comment(TSLexer *lexer) {
-  if (lexer->lookahead != '*') return false;
+/* Skips a "(* ... *)" comment (nested), a C block comment or a line comment without producing a
+ * token; the lookahead is on the opening character. Returns false when no comment starts here
+ * (the opening character is consumed all the same). */
+static bool skip_comment(TSLexer *lexer) {
+  int32_t open = lexer->lookahead;
   advance(lexer);
-  unsigned depth = 1;
-  while (!lexer->eof(lexer)) {
-    int32_t c = lexer->lookahead;
-    if (c == '*') {
+  if (open == '(' && lexer->lookahead == '*') {
+    advance(lexer);
+    unsigned depth = 1;
+    while (!lexer->eof(lexer) && depth > 0) {
+      int32_t c = lexer->lookahead;
       advance(lexer);
-      if (lexer->lookahead == ')') {
+      if (c == '*' && lexer->lookahead == ')') {
         advance(lexer);
-        if (--depth == 0) break;
-      }
-    } else if (c == '(') {
-      advance(lexer);
-      if (lexer->lookahead == '*') {
+        depth--;
+      } else if (c == '(' && lexer->lookahead == '*') {
         advance(lexer);
         depth++;
       }
-    } else {
-      advance(lexer);
     }
+    return true;
   }
-  lexer->mark_end(lexer);
-  lexer->result_symbol = COMMENT;
-  return true;
-}
-
-/* Scans "// ..." or a C block comment after the opening "/" was consumed. */
-static bool scan_slash_comment(TSLexer *lexer) {
-  if (lexer->lookahead == '/') {
+  if (open == '/' && lexer->lookahead == '/') {
     while (!lexer->eof(lexer) && !is_newline(lexer->lookahead)) advance(lexer);
-  } else if (lexer->lookahead == '*') {
+    return true;
+  }
+  if (open == '/' && lexer->lookahead == '*') {
     advance(lexer);
     while (!lexer->eof(lexer)) {
-      if (lexer->lookahead == '*') {
+      int32_t c = lexer->lookahead;
+      advance(lexer);
+      if (c == '*' && lexer->lookahead == '/') {
         advance(lexer);
-        if (lexer->lookahead == '/') {
-          advance(lexer);
-          break;
-        }
-      } else {
-        advance(lexer);
+        break;
       }
     }
-  } else {
-    return false;
+    return true;
   }
-  lexer->mark_end(lexer);
-  lexer->result_symbol = COMMENT;
-  return true;
+  return false;
 }
 
 static bool word_equals(const char *word, const char *keyword) {
@@ -225,6 +218,19 @@ static bool followed_by_declaration(TSLexer *lexer, int token) {
   int32_t c = lexer->lookahead;
   if (lexer->eof(lexer)) return token != KW_AT;
   if (token == KW_AT) return c == '%';
+  if (token == KW_OPC) {
+    /* A qualifier goes on with another qualifier, a declaration or END_VAR; a variable named
+     * OPC with ':', ',' or AT. */
+    if (!is_word_start(c)) return c == '{' || c == '(' || c == '/';
+    char word[3];
+    unsigned length = 0;
+    while (is_word_char(lexer->lookahead)) {
+      if (length < 2) word[length] = (char)to_upper(lexer->lookahead);
+      length++;
+      advance(lexer);
+    }
+    return !(length == 2 && word[0] == 'A' && word[1] == 'T');
+  }
   if (c == '{') return true;
   if (c == '(') {
     advance(lexer);
@@ -263,6 +269,167 @@ static bool followed_by_declaration(TSLexer *lexer, int token) {
   return true;
 }
 
+/* Words that start a Structured Text statement and never an IL instruction. */
+static bool is_st_statement_keyword(const char *word) {
+  return word_equals(word, "IF") || word_equals(word, "CASE") || word_equals(word, "FOR") ||
+         word_equals(word, "WHILE") || word_equals(word, "REPEAT");
+}
+
+/* Skips a string literal; the lookahead is on its opening quote. */
+static void skip_string(TSLexer *lexer) {
+  int32_t quote = lexer->lookahead;
+  advance(lexer);
+  while (!lexer->eof(lexer) && lexer->lookahead != quote && !is_newline(lexer->lookahead)) {
+    if (lexer->lookahead == '$') advance(lexer);
+    if (!lexer->eof(lexer)) advance(lexer);
+  }
+  if (lexer->lookahead == quote) advance(lexer);
+}
+
+/*
+ * Reads on to the end of the line (or, with `until_close`, to the ')' that closes an already
+ * opened parenthesis, across lines) and tells whether a ';' stands there outside comments and
+ * strings. IL never uses ';': a line that has one is Structured Text.
+ */
+static bool rest_has_semicolon(TSLexer *lexer, bool until_close) {
+  unsigned depth = until_close ? 1 : 0;
+  unsigned budget = 4096; /* a runaway '(' must not scan the whole file */
+  while (!lexer->eof(lexer) && budget-- > 0) {
+    int32_t c = lexer->lookahead;
+    if (is_newline(c) && !until_close) return false;
+    if (c == '(' || c == '/') {
+      if (skip_comment(lexer)) continue;
+      if (c == '(') depth++;
+      continue;
+    }
+    if (c == '\'' || c == '"') {
+      skip_string(lexer);
+      continue;
+    }
+    advance(lexer);
+    if (c == ';') return !until_close || depth == 0;
+    if (c == ')' && depth > 0 && --depth == 0 && until_close) {
+      while (is_horizontal_space(lexer->lookahead) || is_newline(lexer->lookahead)) advance(lexer);
+      return lexer->lookahead == ';';
+    }
+  }
+  return false;
+}
+
+/* Reads a word into `word` (upper case, cut to `size` - 1 characters); returns its full length. */
+static unsigned read_word(TSLexer *lexer, char *word, unsigned size) {
+  unsigned length = 0;
+  while (is_word_char(lexer->lookahead)) {
+    if (length < size - 1) word[length] = (char)to_upper(lexer->lookahead);
+    length++;
+    advance(lexer);
+  }
+  word[length < size ? length : size - 1] = '\0';
+  return length;
+}
+
+/* After a word: whether it is "S=", "R=" or "REF=", the ExST assignments. */
+static bool is_set_reset_assignment(TSLexer *lexer, const char *word, unsigned length) {
+  if (lexer->lookahead != '=') return false;
+  return (length == 1 && (word[0] == 'S' || word[0] == 'R')) || (length == 3 && word_equals(word, "REF"));
+}
+
+/*
+ * At the start of the line after an IL line: whether that line is a Structured Text statement
+ * (IF/CASE/FOR/WHILE/REPEAT, "name :=", "name S=", or a call "name(...);"). Then the line
+ * before it was an ST statement that lacks its ';' ("Foo" NEWLINE "Bar();") rather than an IL
+ * instruction: refusing the IL line end there lets error recovery find the missing ';' and keep
+ * the body one statement list. Declaration lines and expression fragments ("x AT %IX1 : BOOL;",
+ * "%IW2;") are not statements. Only looks ahead (the token's end is already marked); the
+ * lookahead is on the first character of the next line that is not blank.
+ */
+static bool next_line_is_st(TSLexer *lexer) {
+  /* A comment first: no (refusing the line end would leave the comment to the internal lexer,
+   * which does not know comments). */
+  if (!is_word_start(lexer->lookahead)) return false;
+  char word[8];
+  unsigned length = read_word(lexer, word, sizeof(word));
+  if (length < sizeof(word) && is_st_statement_keyword(word)) return true;
+  /* The rest of a reference: .member, [index], ^ */
+  for (;;) {
+    while (is_horizontal_space(lexer->lookahead)) advance(lexer);
+    int32_t c = lexer->lookahead;
+    if (c == '.') {
+      advance(lexer);
+      while (is_horizontal_space(lexer->lookahead)) advance(lexer);
+      char member[2];
+      if (read_word(lexer, member, sizeof(member)) == 0) return false;
+    } else if (c == '[') {
+      while (!lexer->eof(lexer) && lexer->lookahead != ']' && !is_newline(lexer->lookahead)) advance(lexer);
+      if (lexer->lookahead != ']') return false;
+      advance(lexer);
+    } else if (c == '^') {
+      advance(lexer);
+    } else {
+      break;
+    }
+  }
+  int32_t c = lexer->lookahead;
+  if (c == ':') {
+    advance(lexer);
+    return lexer->lookahead == '=';
+  }
+  if (c == '(') {
+    advance(lexer);
+    if (lexer->lookahead == '*') return false; /* a comment: not a call */
+    return rest_has_semicolon(lexer, true);
+  }
+  if (is_word_start(c)) {
+    length = read_word(lexer, word, sizeof(word));
+    return is_set_reset_assignment(lexer, word, length);
+  }
+  return false;
+}
+
+/*
+ * Whether an IL operand that is not a name starts here, on the operator's line: a literal or an
+ * address, and the line has no ';' (which only Structured Text uses: "RETURN 1;"). Zero width
+ * (the end is marked before looking), so that the token never stands in the way of the ST reading
+ * of a line. Names are handled by scan_word.
+ */
+static bool starts_il_operand(TSLexer *lexer) {
+  lexer->mark_end(lexer);
+  int32_t c = lexer->lookahead;
+  bool operand = (c >= '0' && c <= '9') || c == '%' || c == '\'' || c == '"' || c == '-' || c == '+';
+  return operand && !rest_has_semicolon(lexer, false);
+}
+
+/*
+ * On a ';' inside an argument list: whether the same line goes on with more arguments and the
+ * ')' that closes the list ("SHL(in_word;n)"), so that the ';' stands for ','. A ';' followed by
+ * the end of the line ends a statement whose ')' is missing.
+ */
+static bool semicolon_separates_arguments(TSLexer *lexer) {
+  advance(lexer);
+  lexer->mark_end(lexer);
+  unsigned depth = 1;
+  bool argument = false;
+  while (!lexer->eof(lexer) && !is_newline(lexer->lookahead)) {
+    int32_t c = lexer->lookahead;
+    if (c == '(' || c == '/') {
+      if (skip_comment(lexer)) continue;
+      if (c == '(') depth++;
+      argument = true;
+      continue;
+    }
+    if (c == '\'' || c == '"') {
+      skip_string(lexer);
+      argument = true;
+      continue;
+    }
+    advance(lexer);
+    if (c == ';') return false;
+    if (c == ')' && --depth == 0) return argument;
+    if (!is_horizontal_space(c)) argument = true;
+  }
+  return false;
+}
+
 /* Declaration keywords that are taken as keywords at the start of a line even
  * where the grammar does not expect them (an unterminated IF before the next
  * METHOD): error recovery then sees the header instead of two identifiers. */
@@ -277,17 +444,16 @@ static bool followed_by_name(TSLexer *lexer) {
   return is_word_start(lexer->lookahead);
 }
 
-static bool scan_word(TSLexer *lexer, const bool *valid_symbols, bool at_line_start) {
+/*
+ * A word: a contextual keyword where one is valid, or else, right after an IL operator on the
+ * same line, the zero-width mark that an operand follows (`operand_valid`).
+ */
+static bool scan_word(TSLexer *lexer, const bool *valid_symbols, bool at_line_start, bool operand_valid) {
+  if (operand_valid) lexer->mark_end(lexer);
   char word[24];
-  unsigned length = 0;
-  while (is_word_char(lexer->lookahead)) {
-    if (length >= sizeof(word) - 1) return false;
-    word[length++] = (char)to_upper(lexer->lookahead);
-    advance(lexer);
-  }
-  word[length] = '\0';
-  if (length < 2) return false;
-  for (unsigned i = 0; i < SOFT_KEYWORD_COUNT; i++) {
+  unsigned length = read_word(lexer, word, sizeof(word));
+  bool may_be_keyword = length >= 2 && length < sizeof(word);
+  for (unsigned i = 0; may_be_keyword && i < SOFT_KEYWORD_COUNT; i++) {
     int token = KW_METHOD + (int)i;
     if (!word_equals(word, SOFT_KEYWORDS[i])) continue;
     if (valid_symbols[token]) {
@@ -302,9 +468,13 @@ static bool scan_word(TSLexer *lexer, const bool *valid_symbols, bool at_line_st
       lexer->result_symbol = token;
       return true;
     }
+    break;
+  }
+  if (!operand_valid || is_set_reset_assignment(lexer, word, length) || rest_has_semicolon(lexer, false)) {
     return false;
   }
-  return false;
+  lexer->result_symbol = IL_SAME_LINE;
+  return true;
 }
 
 bool tree_sitter_iec61131_external_scanner_scan(void *payload, TSLexer *lexer,
@@ -333,6 +503,7 @@ bool tree_sitter_iec61131_external_scanner_scan(void *payload, TSLexer *lexer,
 
   if (newline_valid && (saw_newline || lexer->eof(lexer))) {
     lexer->mark_end(lexer);
+    if (saw_newline && next_line_is_st(lexer)) return false;
     lexer->result_symbol = IL_NEWLINE;
     return true;
   }
@@ -340,16 +511,25 @@ bool tree_sitter_iec61131_external_scanner_scan(void *payload, TSLexer *lexer,
   if (lexer->eof(lexer)) return false;
 
   int32_t c = lexer->lookahead;
-  if (c == '(') {
-    advance(lexer);
-    return scan_paren_comment(lexer);
+  if (c == ';' && valid_symbols[ARGUMENT_SEMICOLON] && !error_recovery) {
+    if (!semicolon_separates_arguments(lexer)) return false;
+    lexer->result_symbol = ARGUMENT_SEMICOLON;
+    return true;
   }
-  if (c == '/') {
-    advance(lexer);
-    return scan_slash_comment(lexer);
+  bool operand_valid = valid_symbols[IL_SAME_LINE] && !error_recovery && !saw_newline;
+  if (operand_valid && !is_word_start(c) && starts_il_operand(lexer)) {
+    lexer->result_symbol = IL_SAME_LINE;
+    return true;
+  }
+  if (c == '(' || c == '/') {
+    /* An unclosed comment runs to the end of the file (the syntax checks report it). */
+    if (!skip_comment(lexer)) return false;
+    lexer->mark_end(lexer);
+    lexer->result_symbol = COMMENT;
+    return true;
   }
   if (is_word_start(c)) {
-    return scan_word(lexer, valid_symbols, saw_newline || lexer->get_column(lexer) == 0);
+    return scan_word(lexer, valid_symbols, saw_newline || lexer->get_column(lexer) == 0, operand_valid);
   }
   return false;
 }

@@ -128,5 +128,12 @@ TEST(Check, EditInABodyRechecksOnlyThatFile) {
   EXPECT_TRUE(workspace->check_source(0).diagnostics.empty());
 }
 
+TEST(Check, UnknownQualifierIsTheMissingLibraryCode) {
+  // TcUnit.RUN() without TcUnit's stubs: E002, like unknown library types and POUs; a qualifier
+  // close to a local name is still a typo (E001 with did-you-mean).
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR fbMotor : TON; END_VAR\nTcUnit.RUN();\nfbMotr.IN := TRUE;\nEND_PROGRAM\n"),
+            (Codes{"E002", "E001"}));
+}
+
 }  // namespace
 }  // namespace rung::check
