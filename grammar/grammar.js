@@ -1003,6 +1003,7 @@ module.exports = grammar({
       /2#[01_]+/,
       /8#[0-7_]+/,
       /16#[0-9A-Fa-f_]+/,
+      /10#[0-9_]+/,  // explicit decimal, accepted by CODESYS and TwinCAT (TcUnit examples)
     )),
 
     real_literal: _ => token(choice(

@@ -63,6 +63,8 @@ std::optional<__int128> parse_integer_literal(std::string_view text) {
       base = 8;
     } else if (prefix == "16") {
       base = 16;
+    } else if (prefix == "10") {
+      base = 10;
     } else {
       return std::nullopt;
     }

@@ -195,7 +195,9 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
   }
   info.value = value;
   info.untyped_literal = value->kind != ConstValue::Kind::Bool;
-  info.based_literal = kind == "integer_literal" && literal.text().find('#') != std::string_view::npos;
+  // 2#, 8#, 16#: a bit pattern; 10#30000 is just a decimal number.
+  info.based_literal = kind == "integer_literal" && literal.text().find('#') != std::string_view::npos &&
+                       !literal.text().starts_with("10#");
   info.type = literal_type(*value, info.based_literal);
   return info;
 }

@@ -135,5 +135,12 @@ TEST(Check, UnknownQualifierIsTheMissingLibraryCode) {
             (Codes{"E002", "E001"}));
 }
 
+TEST(Check, ExplicitDecimalLiteral) {
+  // 10#30000 (TcUnit examples): a decimal number, so it fits a UINT like 30000 does, and 40000
+  // is out of range for an INT like the plain literal.
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR u : UINT := 10#30000; i : INT; END_VAR\ni := 10#40000;\nEND_PROGRAM\n"),
+            (Codes{"E102"}));
+}
+
 }  // namespace
 }  // namespace rung::check
