@@ -3,14 +3,12 @@
 #include <cctype>
 #include <string>
 
+#include "parser/keywords.hpp"
+
 namespace rung::ast {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
+using keywords::upper;
 
 bool pou_kind_of(std::string_view node_kind, PouKind* out) {
   struct Row {

@@ -12,11 +12,7 @@
 namespace rung {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
+using keywords::upper;
 
 template <size_t N>
 bool one_of(const std::array<std::string_view, N>& kinds, std::string_view kind) {

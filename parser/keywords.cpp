@@ -7,13 +7,14 @@
 #include <vector>
 
 namespace rung::keywords {
-namespace {
 
 std::string upper(std::string_view s) {
   std::string out(s);
   for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return out;
 }
+
+namespace {
 
 // Sorted, so that lookups are a binary search. Not here although some compilers reserve them:
 // LTIME, LDATE, LTOD, LDT (64-bit types added in CODESYS V3.5; CODESYS 2.3 code such as OSCAT

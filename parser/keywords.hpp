@@ -4,9 +4,13 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace rung::keywords {
+
+// ASCII upper case: keywords and identifiers compare without case.
+std::string upper(std::string_view word);
 
 // A word that is reserved in every dialect rung reads (CODESYS, TwinCAT, IEC 61131-3, OpenPCS):
 // the keywords of declarations and statements, the operators written as words and the

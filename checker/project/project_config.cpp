@@ -11,16 +11,13 @@
 
 #include "parser/diagnostic_codes.hpp"
 #include "parser/file_walk.hpp"
+#include "parser/keywords.hpp"
 #include "parser/source/line_index.hpp"
 
 namespace rung::project {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
+using keywords::upper;
 
 // Collects diagnostics with positions taken from toml++'s 1-based line/column.
 class ConfigReader {

@@ -62,22 +62,12 @@ std::optional<TypeLayout> layout(const ProjectModel& model, const Type* type, in
     }
     case TypeKind::Struct:
     case TypeKind::Union: return aggregate_layout(model, type, depth);
-    case TypeKind::Bool:
-    case TypeKind::Bit:
-    case TypeKind::SignedInt:
-    case TypeKind::UnsignedInt:
-    case TypeKind::Real:
-    case TypeKind::Duration:
-    case TypeKind::Date:
-    case TypeKind::TimeOfDay:
-    case TypeKind::DateTime:
-    case TypeKind::Char:
-    case TypeKind::WChar: {
-      if (type->bits == 0) return std::nullopt;
+    default: {
+      // Elementary values; FB instances, generics and unknown types have no size rung knows.
+      if (!is_elementary(type) || type->bits == 0) return std::nullopt;
       const uint64_t bytes = std::max<uint64_t>(1, type->bits / 8);  // a BOOL takes a byte
       return TypeLayout{bytes, std::min(bytes, kMaxAlignment)};
     }
-    default: return std::nullopt;  // FB instances, generics, unknown: no fixed size rung knows
   }
 }
 
