@@ -10,6 +10,7 @@
 
 #include "bench/generated_project.hpp"
 #include "checker/check.hpp"
+#include "checker/query/references.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -309,5 +310,33 @@ void BM_RecheckAfterInterfaceEdit(benchmark::State& state) {
   run_edit(state, edit, true, "BM_RecheckAfterInterfaceEdit, after Workspace::update");
 }
 BENCHMARK(BM_RecheckAfterInterfaceEdit)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// --- Language server queries ---------------------------------------------------------------------
+
+// Find references in the loaded project. Arg 0: TON, the library FB every program declares an
+// instance of (the stubs are searched too). Arg 1: the middle cell's GVL_CellN.bStart, whose name
+// every cell's list and program spell: the text prefilter passes hundreds of occurrences that
+// resolution must reject as another cell's bStart.
+void BM_FindReferences(benchmark::State& state) {
+  const Workspace& workspace = edit_workspace();
+  const rung::check::ProjectModel& model = workspace.model();
+  const rung::check::Symbol* symbol = nullptr;
+  if (state.range(0) == 0) {
+    symbol = model.find_global("TON");
+  } else if (const rung::check::Symbol* list = model.find_global("GVL_Cell" + std::to_string(kProjectFiles / 5 / 2))) {
+    symbol = model.find_member(list, "bStart");
+  }
+  if (!symbol) {
+    state.SkipWithError("the symbol is not in the generated project");
+    return;
+  }
+  size_t found = 0;
+  for (auto _ : state) {
+    found = rung::check::query::find_references(workspace, symbol, true).size();
+    benchmark::DoNotOptimize(found);
+  }
+  state.counters["references"] = static_cast<double>(found);
+}
+BENCHMARK(BM_FindReferences)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

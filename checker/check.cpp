@@ -1,9 +1,7 @@
 #include "checker/check.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdlib>
-#include <thread>
 
 #include "checker/conditional_sources.hpp"
 #include "checker/semantic/body_checker.hpp"
@@ -11,6 +9,7 @@
 #include "checker/semantic/pragma_checker.hpp"
 #include "checker/semantic/recursion_checker.hpp"
 #include "parser/file_walk.hpp"
+#include "parser/parallel_for.hpp"
 #include "parser/parallel_load.hpp"
 
 #ifndef RUNG_LIBRARY_DIR
@@ -65,14 +64,37 @@ void collect_pous(const Symbol* symbol, std::vector<const Symbol*>& out) {
   for (const Symbol* member : symbol->ordered) collect_pous(member, out);
 }
 
+// Loads `files` on `threads` threads and adds them to `model` in order. Each file's symbols are
+// collected on the thread that parsed it: the ids the model will give are known in advance.
+void add_files(ProjectModel& model, const std::vector<fs::path>& files, unsigned threads,
+               const std::string& library_name, std::vector<std::string>* load_errors) {
+  const SourceId first_id = static_cast<SourceId>(model.source_count());
+  std::vector<FileSymbols> symbols(files.size());  // one slot per file: workers never share one
+  auto collect = [&](LoadedDocument& loaded) {
+    symbols[loaded.index] = collect_file_symbols(static_cast<SourceId>(first_id + loaded.index), *loaded.document,
+                                                 !library_name.empty(), "");
+  };
+  load_documents_in_order(
+      files, threads,
+      [&](LoadedDocument& loaded) {
+        if (!loaded.document) {
+          if (load_errors) load_errors->push_back(loaded.path.string() + ": " + loaded.error);
+          return;
+        }
+        // An unreadable file earlier in the list shifts the ids: collect again with the real one.
+        if (model.source_count() != first_id + loaded.index) {
+          model.add_source(std::move(loaded.document), library_name);
+        } else {
+          model.add_source(std::move(loaded.document), library_name, std::move(symbols[loaded.index]));
+        }
+      },
+      collect);
+}
+
 }  // namespace
 
 void Workspace::add_library_folder(const fs::path& folder, unsigned threads) {
-  const std::string name = folder.filename().string();
-  load_documents_in_order(st_files_below(folder), threads, [&](LoadedDocument& loaded) {
-    if (!loaded.document) return;
-    model_->add_source(std::make_unique<Document>(std::move(*loaded.document)), name);
-  });
+  add_files(*model_, st_files_below(folder), threads, folder.filename().string(), nullptr);
 }
 
 void Workspace::add_libraries(const LoadOptions& options, unsigned threads) {
@@ -88,13 +110,8 @@ std::unique_ptr<Workspace> Workspace::load_files(const std::vector<fs::path>& fi
   std::unique_ptr<Workspace> workspace(new Workspace());
   workspace->config_ = config;
   workspace->model_ = std::make_unique<ProjectModel>(make_profile(config));
-  load_documents_in_order(files, options.threads, [&](LoadedDocument& loaded) {
-    if (!loaded.document) {
-      workspace->load_errors.push_back(loaded.path.string() + ": " + loaded.error);
-      return;
-    }
-    workspace->model_->add_source(std::make_unique<Document>(std::move(*loaded.document)));
-  });
+  workspace->model_->set_threads(options.threads);
+  add_files(*workspace->model_, files, options.threads, "", &workspace->load_errors);
   workspace->add_libraries(options, options.threads);
   compile_conditionally(*workspace->model_);  // blanks inactive {IF} branches, links again
   return workspace;
@@ -158,16 +175,7 @@ std::vector<FileDiagnostics> Workspace::check_all(unsigned threads) const {
     if (!model_->source(id).library) ids.push_back(id);
   }
   std::vector<FileDiagnostics> results(ids.size());
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max<size_t>(1, ids.size())));
-  std::atomic<size_t> next{0};
-  auto work = [&]() {
-    for (size_t i = next++; i < ids.size(); i = next++) results[i] = check_source(ids[i]);
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& thread : pool) thread.join();
+  parallel_for(ids.size(), threads, [&](size_t i) { results[i] = check_source(ids[i]); });
   std::sort(results.begin(), results.end(), [](const FileDiagnostics& a, const FileDiagnostics& b) { return a.path < b.path; });
   return results;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "checker/constant/const_value.hpp"
 #include "checker/project/project_config.hpp"
 #include "checker/semantic/direct_address.hpp"
 
@@ -23,6 +24,13 @@ struct Profile {
   // Integers assign to enum variables and enums take part in arithmetic (CODESYS V3 without
   // {attribute 'strict'}); IEC enums are closed.
   bool enums_are_integers = true;
+  // A bare enum value name that two enumerations define is resolved by the type its context
+  // expects (IEC, MatIEC: `colorvar := blue` picks the enum of colorvar). CODESYS and TwinCAT
+  // reject it even there (MP300 manual L14551-14561): only COLORS_1.blue is unambiguous.
+  bool enum_values_typed_by_context = false;
+  // + - * / on bit strings (WORD - 3): CODESYS and TwinCAT compute them like unsigned integers;
+  // IEC keeps bit strings out of arithmetic (OpenPCS S3035 "numeric, date or time operand").
+  bool bit_string_arithmetic = true;
   // The literals 0 and 1 assign to BOOL (CODESYS types them as BIT).
   bool bit_literals_to_bool = true;
   // A PROGRAM may declare VAR_INPUT / VAR_OUTPUT / VAR_IN_OUT (CODESYS, TwinCAT, IEC); OpenPCS not.
@@ -33,6 +41,13 @@ struct Profile {
   // (MAX(INT, REAL), LN(INT)): CODESYS, TwinCAT, IEC 3rd ed. OpenPCS binds T to one type, and an
   // integer constant adapts only to integer and bit types (S5024 LD 1 / LN, S5027 LD 1 / MAX r).
   bool generic_arguments_widen = true;
+  // --- Calls (semantic/call_checker.cpp) --------------------------------------------------
+  // Formal arguments follow the callee's declaration order: OpenPCS translates an ST call to IL
+  // without the declaration and gets the order wrong otherwise (S3047). Elsewhere any order.
+  bool formal_arguments_in_order = false;
+  // The length and position inputs of LEFT, RIGHT and MID are UINT, not any integer (OpenPCS
+  // C10035, L14045-14068, although its reference pages say ANY_INT).
+  bool string_positions_are_uint = false;
   // A function block may call an instance it received as VAR_INPUT: not in OpenPCS (S5029).
   bool call_input_instances = true;
   // How the numbers of %I/%Q/%M addresses map to bytes: CODESYS V3 counts units of the address's
@@ -96,6 +111,28 @@ struct Profile {
   // Generic types (ANY_INT, ...) as parameter types of a user FUNCTION (CODESYS allows ANY and
   // ANY_<type> inputs; IEC and OpenPCS S5035 keep them for standard functions).
   bool generic_parameters = true;
+  // --- SFC (semantic/sfc_checker.cpp) -----------------------------------------------------
+  // Step names begin with a letter a-z and go on with letters, digits and '_' (OpenPCS
+  // L2500-2506: `_Step1` is not a step name); 0 = any identifier, else at most this many characters.
+  bool step_names_start_with_letter = false;
+  uint32_t max_step_name_length = 0;
+  // --- Literals (semantic/expression_typer.cpp) ---------------------------------------------
+  // Duration literal units (T#1d_25h_15m, T#3us): see DurationRules in constant/const_value.hpp.
+  DurationRules duration_rules;
+  // The largest TIME in milliseconds: CODESYS counts 32 unsigned bits (T#49d17h2m47s295ms,
+  // textbook L4659), OpenPCS 32 signed bits (+/- 24.85 days, L5849-5851, C10108).
+  int64_t max_time_milliseconds = 0xFFFFFFFFll;
+  // --- Implementation limits (semantic/limits_checker.cpp, E704); 0 = no limit ---------------
+  // Significant characters of an identifier (OpenPCS S1028: 64).
+  uint32_t max_identifier_length = 0;
+  // Subscripts of one ARRAY[...] (OpenPCS Appendix D: 6).
+  uint32_t max_array_dimensions = 0;
+  // Names in one declaration `a, b, c : INT;` (OpenPCS S4001: 60).
+  uint32_t max_names_per_declaration = 0;
+  // Array bounds lie in -limit..limit (OpenPCS C10076/C10077: 32767).
+  uint32_t array_bound_limit = 0;
+  // A call as an argument of another call, MAX(ABS(x), 3): not in OpenPCS (C10110).
+  bool nested_calls = true;
   // Target: longest STRING(n) and the length of STRING without (n).
   uint32_t max_string_length = 255;
   uint32_t default_string_length = 80;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "checker/constant/const_eval.hpp"
@@ -33,6 +34,17 @@ SyntaxNode generic_parameters_of(const Symbol* scope) {
     if (s->kind == SymbolKind::Function && s->node) return s->node.child_by_field("type_parameters");
   }
   return {};
+}
+
+// A plain file's global list is named after the file (CODESYS exports GVL.st for a list called
+// GVL). A file name that cannot be an identifier (057_example.st, untitled-1) could never be
+// written as a qualifier: such a list gets CODESYS's default name for a new list, GVL.
+std::string gvl_name_for(const std::string& path) {
+  std::string stem = std::filesystem::path(path).stem().string();
+  const bool identifier = !stem.empty() && !std::isdigit(static_cast<unsigned char>(stem.front())) &&
+                          std::all_of(stem.begin(), stem.end(),
+                                      [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  return identifier ? stem : std::string("GVL");
 }
 
 }  // namespace
@@ -66,12 +78,18 @@ ProjectModel::~ProjectModel() = default;
 
 SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::string library_name) {
   const SourceId id = static_cast<SourceId>(sources_.size());
+  FileSymbols symbols = collect_file_symbols(id, *document, !library_name.empty(), "");
+  return add_source(std::move(document), std::move(library_name), std::move(symbols));
+}
+
+SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::string library_name, FileSymbols symbols) {
+  const SourceId id = static_cast<SourceId>(sources_.size());
   auto source = std::make_unique<Source>();
   source->library = !library_name.empty();
   source->library_name = std::move(library_name);
-  const std::string stem = std::filesystem::path(document->path()).stem().string();
+  const std::string stem = gvl_name_for(document->path());
   source->document = std::move(document);
-  source->symbols = collect_file_symbols(id, *source->document, source->library, "");
+  source->symbols = std::move(symbols);
   // A plain file's GVL is named after the file (CODESYS exports GVL.st for a list called GVL).
   // The name must outlive the symbols: keep it in the document-owned string below.
   sources_.push_back(std::move(source));
@@ -89,7 +107,7 @@ bool ProjectModel::update_source(SourceId id, std::unique_ptr<Document> document
   Source& source = *sources_[id];
   FileSymbols fresh = collect_file_symbols(id, *document, source.library, "");
   if (relink_bodies_only(source, document, fresh)) return false;
-  const std::string stem = std::filesystem::path(document->path()).stem().string();
+  const std::string stem = gvl_name_for(document->path());
   source.document = std::move(document);
   source.symbols = std::move(fresh);
   source.gvl_name_storage = stem;
@@ -111,6 +129,8 @@ void ProjectModel::link() {
   globals_.clear();
   global_variables_.clear();
   enum_values_.clear();
+  global_lists_.clear();
+  qualified_only_enums_.clear();
   libraries_.clear();
   named_types_.clear();
   enum_numbers_.clear();
@@ -154,6 +174,7 @@ void ProjectModel::index_source(Source& source) {
       }
     }
     if (symbol->kind == SymbolKind::GlobalList) {
+      global_lists_.push_back(symbol);
       for (Symbol* variable : symbol->ordered) {
         if (!symbol->has(kQualifiedOnly) && !variable->name.empty()) global_variables_.emplace(variable->name, variable);
       }
@@ -163,6 +184,10 @@ void ProjectModel::index_source(Source& source) {
       for (Symbol* value : symbol->ordered) {
         if (value->kind == SymbolKind::EnumValue) enum_values_[value->name].push_back(value);
       }
+    }
+    if (symbol->kind == SymbolKind::DataType && named_kind_of(*symbol) == TypeKind::Enum &&
+        symbol->has(kQualifiedOnly)) {
+      qualified_only_enums_.push_back(symbol);
     }
   }
 }
@@ -239,7 +264,7 @@ void ProjectModel::resolve_bases(Symbol& symbol, std::vector<Diagnostic>& diagno
   }
 }
 
-const Symbol* ProjectModel::resolve_type_symbol(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) {
+const Symbol* ProjectModel::resolve_type_symbol(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) const {
   const Type* type = resolve_type_name(name, scope, diagnostics);
   return type ? type->declaration : nullptr;
 }
@@ -333,7 +358,7 @@ const Type* ProjectModel::resolve_type(SyntaxNode spec, const Symbol* scope, std
   return types_->unknown();  // generic_type, variadic_type: not checked
 }
 
-const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) {
+const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) const {
   const std::string_view text = name.text();
   // Dotted names: Library.Type, Namespace.Type, GVL-less qualified types (__SYSTEM.TYPE_CLASS).
   if (const size_t dot = text.rfind('.'); dot != std::string_view::npos) {
@@ -461,6 +486,35 @@ const std::vector<const Symbol*>* ProjectModel::find_enum_values(std::string_vie
   return found == enum_values_.end() ? nullptr : &found->second;
 }
 
+const Symbol* ProjectModel::find_qualified_only(std::string_view name) const {
+  // Only asked for names nothing else declares (the error path), so a scan is cheap enough.
+  for (const std::vector<const Symbol*>* scopes : {&global_lists_, &qualified_only_enums_}) {
+    for (const Symbol* scope : *scopes) {
+      if (!scope->has(kQualifiedOnly)) continue;
+      if (const Symbol* member = scope->own_member(name)) return member;
+    }
+  }
+  return nullptr;
+}
+
+const Symbol* ProjectModel::find_linked_global(std::string_view name) const {
+  if (const Symbol* variable = find_global_variable(name)) return variable;
+  for (const Symbol* list : global_lists_) {
+    if (const Symbol* variable = list->own_member(name); variable && variable->kind == SymbolKind::Variable) {
+      return variable;
+    }
+  }
+  return nullptr;
+}
+
+const Symbol* ProjectModel::find_in_global_lists(std::string_view list, std::string_view name) const {
+  for (const Symbol* candidate : global_lists_) {
+    if (!names_equal(candidate->name, list)) continue;
+    if (const Symbol* variable = candidate->own_member(name)) return variable;
+  }
+  return nullptr;
+}
+
 bool ProjectModel::is_library_namespace(std::string_view name) const { return libraries_.contains(name); }
 
 const Symbol* ProjectModel::find_in_library(std::string_view library, std::string_view name) const {
@@ -489,10 +543,15 @@ const Symbol* ProjectModel::lookup(const Symbol* scope, std::string_view name) c
     if (names_equal(s->name, name) && is_pou_kind(s->kind)) return s;  // the function's own result
     if (const Symbol* member = find_member(s, name)) return member;
   }
+  if (const Symbol* global = lookup_global(name)) return global;
+  return find_local_enum_value(scope, name);
+}
+
+const Symbol* ProjectModel::lookup_global(std::string_view name) const {
   if (const Symbol* variable = find_global_variable(name)) return variable;
   if (const Symbol* global = find_global(name)) return global;
   if (const auto* values = find_enum_values(name); values && !values->empty()) return values->front();
-  return find_local_enum_value(scope, name);
+  return nullptr;
 }
 
 const Symbol* ProjectModel::find_local_type(const Symbol* scope, std::string_view name) const {

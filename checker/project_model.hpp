@@ -51,6 +51,9 @@ class ProjectModel {
 
   // Adds a parsed file; `library_name` non-empty marks a stub library file. Call link() after.
   SourceId add_source(std::unique_ptr<Document> document, std::string library_name = {});
+  // The same with the file's symbols collected already (on a loading thread): collect_file_symbols
+  // with the id this call gives, source_count() at the time of the call.
+  SourceId add_source(std::unique_ptr<Document> document, std::string library_name, FileSymbols symbols);
   // Replaces a file's text (an editor change). Returns true when what other files can see changed:
   // then link() must follow and every file may have new diagnostics. Returns false when only
   // bodies changed: the model is already linked again (incremental_link.cpp) and only this
@@ -59,6 +62,9 @@ class ProjectModel {
 
   // Ties names across files and resolves every declaration's type. Deterministic.
   void link();
+  // Threads for the whole-project passes of link() (0: one per core; default 1).
+  void set_threads(unsigned threads) { threads_ = threads; }
+  unsigned threads() const { return threads_; }
 
   size_t source_count() const { return sources_.size(); }
   const Source& source(SourceId id) const { return *sources_[id]; }
@@ -71,6 +77,14 @@ class ProjectModel {
   const Symbol* find_global_variable(std::string_view name) const;
   // Enum values with this name in enums that allow unqualified access.
   const std::vector<const Symbol*>* find_enum_values(std::string_view name) const;
+  // A variable of a {attribute 'qualified_only'} GVL or a value of such an enum: the name exists,
+  // but only written with its list or type (GVL.x, E.value); nullptr if there is none.
+  const Symbol* find_qualified_only(std::string_view name) const;
+  // The VAR_GLOBAL a VAR_EXTERNAL of this name refers to, also in qualified_only lists.
+  const Symbol* find_linked_global(std::string_view name) const;
+  // A variable of any global list called `list` (lists of one name are merged, e.g. a TwinCAT GVL
+  // split in several objects).
+  const Symbol* find_in_global_lists(std::string_view list, std::string_view name) const;
   // A library namespace (the stub folder's name, e.g. Standard, Util).
   bool is_library_namespace(std::string_view name) const;
   const Symbol* find_in_library(std::string_view library, std::string_view name) const;
@@ -79,6 +93,9 @@ class ProjectModel {
   // What a bare name means inside `scope` (a POU or member): locals, then the owner's members
   // and bases, then globals. Returns nullptr if nothing is visible by that name.
   const Symbol* lookup(const Symbol* scope, std::string_view name) const;
+  // What a bare name means in the global scope only (CODESYS `.x`): a global variable, a POU,
+  // type or GVL, an enum value.
+  const Symbol* lookup_global(std::string_view name) const;
   // A TYPE declared inside `scope` or the POUs around it (OpenPCS POU-local types); nullptr if none.
   const Symbol* find_local_type(const Symbol* scope, std::string_view name) const;
   // A value of an enumeration declared inside `scope` or the POUs around it.
@@ -96,6 +113,9 @@ class ProjectModel {
   const Type* type_of(const Symbol* symbol) const;
   // Resolves a type written in `scope`; unknown names give E002 in `diagnostics` if given.
   const Type* resolve_type(SyntaxNode type_spec, const Symbol* scope, std::vector<Diagnostic>* diagnostics);
+  // The POU or data type a type name written in `scope` names (EXTENDS FB_Base, x : ST_Point);
+  // nullptr for elementary and unknown types. Read-only after link() (the language server asks).
+  const Symbol* resolve_type_symbol(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) const;
   // The constant value of an expression in `scope` (literals, CONSTANTs, enum values).
   std::optional<ConstValue> constant_value(SyntaxNode expression, const Symbol* scope) const;
   // An enum value's integer value.
@@ -121,9 +141,8 @@ class ProjectModel {
   void resolve_declarations(Source& source);
   void resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagnostics);
   void resolve_bases(Symbol& symbol, std::vector<Diagnostic>& diagnostics);
-  const Symbol* resolve_type_symbol(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics);
   const Type* named_type_of(const Symbol* symbol) const;
-  const Type* resolve_type_name(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics);
+  const Type* resolve_type_name(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) const;
   void compute_enum_values(const Symbol& enum_symbol);
 
   Profile profile_;
@@ -133,12 +152,17 @@ class ProjectModel {
   NameMap globals_;           // POUs, data types and GVLs
   NameMap global_variables_;  // unqualified global variables
   std::unordered_map<std::string_view, std::vector<const Symbol*>, NameHash, NameEqual> enum_values_;
+  // Every global list (qualified_only or not) and qualified_only enum. Pointers, not names, so a
+  // body-only re-link keeps them without re-keying.
+  std::vector<const Symbol*> global_lists_;
+  std::vector<const Symbol*> qualified_only_enums_;
   std::unordered_map<std::string_view, NameMap, NameHash, NameEqual> libraries_;
   std::unordered_map<const Symbol*, const Type*> named_types_;  // data types and POUs
   std::unordered_map<const Symbol*, __int128> enum_numbers_;
   std::unique_ptr<AddressTable> address_table_;
   std::unique_ptr<ConfigurationTable> configuration_table_;
   std::unique_ptr<RecursionIndex> recursion_index_;
+  unsigned threads_ = 1;
   mutable std::mutex types_mutex_;  // derived types may be created while bodies are checked
 };
 

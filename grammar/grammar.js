@@ -151,6 +151,22 @@ function declarationList($) {
   ];
 }
 
+/**
+ * An OpenPCS SFC step macro without its end: @ACTIVATE_STEP(S), @DEACTIVATE_STEP(S),
+ * @DEACTIVATE_ALL_STEPS().
+ * @param {GrammarSymbols} $
+ * @return {Rule[]}
+ */
+function stepMacro($) {
+  return [
+    '@',
+    field('name', choice(kw('ACTIVATE_STEP'), kw('DEACTIVATE_STEP'), kw('DEACTIVATE_ALL_STEPS'))),
+    '(',
+    optional(field('step', $.identifier)),
+    ')',
+  ];
+}
+
 module.exports = grammar({
   name: 'iec61131',
 
@@ -726,6 +742,7 @@ module.exports = grammar({
       $.label,
       $.empty_statement,
       $.try_statement,
+      alias($._st_step_macro, $.sfc_step_macro),
     ),
 
     _assignment_operator: _ => choice(
@@ -972,7 +989,7 @@ module.exports = grammar({
     _wrong_argument_separator: $ => seq(alias($._argument_semicolon, ';'), $._unreachable),
 
     argument: $ => choice(
-      seq(field('name', $.identifier), ':=', optional(field('value', $._expression))),
+      seq(field('name', $.identifier), ':=', optional(field('value', choice($._expression, $.il_expression)))),
       field('value', $._expression),
     ),
 
@@ -1047,7 +1064,15 @@ module.exports = grammar({
     // -----------------------------------------------------------------------
     // Instruction List
     // -----------------------------------------------------------------------
-    il_body: $ => prec.right(repeat1(choice($.il_instruction, $.il_label, $._stray_closer))),
+    il_body: $ => prec.right(repeat1(choice($.il_instruction, $.il_label, $.sfc_step_macro, $._stray_closer))),
+
+    // OpenPCS step control in the IL code of an SFC: @ACTIVATE_STEP(S), @DEACTIVATE_STEP(S) and
+    // @DEACTIVATE_ALL_STEPS() change which steps are active from the next cycle on. IL only.
+    sfc_step_macro: $ => seq(...stepMacro($), $._il_newline),
+
+    // The same macro written as an ST statement: not allowed there (the checker says so), but
+    // read as one statement so that the POU around it stays whole.
+    _st_step_macro: $ => seq(...stepMacro($), ';'),
 
     // A closing word of a declaration block where an instruction may start (a doubled END_VAR)
     // is lexed as that keyword and can never be completed (the scanner never produces the
@@ -1074,11 +1099,13 @@ module.exports = grammar({
         optional(seq($._il_same_line, commaSep1(field('operand', $._expression)))),
         $._il_newline,
       ),
-      // deferred operator: AND( ... ) over several lines
+      // deferred operator: AND( ... ) over several lines; the first line may hold an operand
+      // (IEC: AND( %IX0.1) or, as CODESYS prints it, the load that opens the parentheses
+      // (AND(LD %IX0.1)
       seq(
         field('operator', $._il_operator),
         '(',
-        optional(field('operand', $._expression)),
+        optional(choice(field('operand', $._expression), alias($._il_load_after_parenthesis, $.il_instruction))),
         $._il_newline,
         repeat(choice($.il_instruction, $.il_label)),
         ')',
@@ -1093,6 +1120,20 @@ module.exports = grammar({
         ')',
         $._il_newline,
       ),
+    ),
+
+    // An IL computation as the value of a CAL parameter (OpenPCS S5034): P := (a ADD b).
+    il_expression: $ => seq(
+      '(',
+      field('operand', $._expression),
+      repeat1(alias($._il_inline_instruction, $.il_instruction)),
+      ')',
+    ),
+
+    // LD is a keyword only here (where an operand could also start), so "AND(LD x" is a load.
+    _il_load_after_parenthesis: $ => seq(
+      field('operator', choice(alias(/LD/i, $.il_operator), alias(/LDN/i, $.il_operator))),
+      field('operand', $._expression),
     ),
 
     _il_inline_instruction: $ => seq(

@@ -34,19 +34,12 @@ struct Marker {
 
 size_t keep_first_conditional_branches(const SyntaxTree& tree, std::string& text) {
   if (!tree.root()) return 0;
-  // Conditional pragmas in text order (iterative walk; pragmas are extras anywhere in the tree).
+  // Conditional pragmas in text order.
   std::vector<Marker> markers;
-  std::vector<SyntaxNode> stack{tree.root()};
-  while (!stack.empty()) {
-    SyntaxNode n = stack.back();
-    stack.pop_back();
-    if (n.kind() == "pragma") {
-      SyntaxNode c = n.first_child_of_kind("conditional_pragma");
-      if (c) markers.push_back({directive_of(c.text()), n.begin()});
-      continue;
-    }
-    for (uint32_t i = n.child_count(); i-- > 0;) stack.push_back(n.child(i));
-  }
+  for_each_pragma(tree.root(), [&](SyntaxNode n) {
+    SyntaxNode c = n.first_child_of_kind("conditional_pragma");
+    if (c) markers.push_back({directive_of(c.text()), n.begin()});
+  });
   size_t blanked = 0;
   // For each group: once a second branch starts, blank up to the group's {END_IF}.
   struct Group {

@@ -10,14 +10,19 @@
 namespace rung {
 
 void load_documents_in_order(const std::vector<std::filesystem::path>& paths, unsigned threads,
-                             const std::function<void(LoadedDocument&)>& consume) {
+                             const std::function<void(LoadedDocument&)>& consume,
+                             const std::function<void(LoadedDocument&)>& prepare) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max<size_t>(1, paths.size())));
 
   auto load = [&](size_t i) {
     LoadedDocument item;
+    item.index = i;
     item.path = paths[i];
-    item.document = Document::load(paths[i], &item.error);
+    if (std::optional<Document> document = Document::load(paths[i], &item.error)) {
+      item.document = std::make_unique<Document>(std::move(*document));
+      if (prepare) prepare(item);
+    }
     return item;
   };
   if (threads <= 1) {

@@ -68,6 +68,11 @@ class SyntaxNode {
     return wrap(ts_node_descendant_for_byte_range(node_, begin, end));
   }
 
+  // The smallest named node that spans [begin, end).
+  SyntaxNode named_descendant_for_range(uint32_t begin, uint32_t end) const {
+    return wrap(ts_node_named_descendant_for_byte_range(node_, begin, end));
+  }
+
   TSNode raw() const { return node_; }
   std::string_view source() const { return source_; }
   bool operator==(const SyntaxNode& other) const { return ts_node_eq(node_, other.node_); }
@@ -77,6 +82,44 @@ class SyntaxNode {
   TSNode node_{};
   std::string_view source_;
 };
+
+// Visits `root` and every node below it in document order (anonymous tokens and extras too), with
+// one tree cursor: child(i) of the tree-sitter 0.20 runtime starts over from the first child, so
+// index loops over children are quadratic. `enter(node)` returns whether to visit its children.
+template <typename Enter>
+void walk_preorder(SyntaxNode root, Enter&& enter) {
+  if (!root) return;
+  TSTreeCursor cursor = ts_tree_cursor_new(root.raw());
+  bool descend = enter(SyntaxNode(ts_tree_cursor_current_node(&cursor), root.source()));
+  while (true) {
+    if (!(descend && ts_tree_cursor_goto_first_child(&cursor))) {
+      // No children to visit: the next sibling of this node or of the nearest ancestor.
+      while (!ts_tree_cursor_goto_next_sibling(&cursor)) {
+        if (!ts_tree_cursor_goto_parent(&cursor)) {
+          ts_tree_cursor_delete(&cursor);
+          return;
+        }
+      }
+    }
+    descend = enter(SyntaxNode(ts_tree_cursor_current_node(&cursor), root.source()));
+  }
+}
+
+// Every pragma node of the tree ({attribute ...}, {IF ...}, {warning ...}), in text order. Pragmas
+// are extras that may hang anywhere, but each starts with '{': the text says where to look, so a
+// file with a few pragmas costs a few lookups, not a walk over the whole tree.
+template <typename Visit>
+void for_each_pragma(SyntaxNode root, Visit&& visit) {
+  const std::string_view text = root.source();
+  for (size_t at = text.find('{', root.begin()); at != std::string_view::npos && at < root.end();
+       at = text.find('{', at + 1)) {
+    SyntaxNode node = root.named_descendant_for_range(static_cast<uint32_t>(at), static_cast<uint32_t>(at + 1));
+    // A '{' inside a comment or a string finds that comment or string instead.
+    if (node.begin() != at || node.kind() != "pragma") continue;
+    visit(node);
+    at = node.end() - 1;
+  }
+}
 
 // One piece of the lossless token stream.
 struct Token {

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace rung::check {
 namespace {
@@ -53,6 +55,19 @@ std::string to_string(const ConstValue& value) {
   return "?";
 }
 
+std::string duration_literal_text(__int128 nanoseconds) {
+  std::string text = nanoseconds < 0 ? "T#-" : "T#";
+  __int128 rest = (nanoseconds < 0 ? -nanoseconds : nanoseconds) / 1'000'000;
+  constexpr std::array<std::pair<std::string_view, int64_t>, 5> kUnits = {
+      {{"d", 86'400'000}, {"h", 3'600'000}, {"m", 60'000}, {"s", 1000}, {"ms", 1}}};
+  for (const auto& [unit, milliseconds] : kUnits) {
+    if (rest < milliseconds) continue;
+    text += int128_to_string(rest / milliseconds) + std::string(unit);
+    rest %= milliseconds;
+  }
+  return text.back() == '#' || text.back() == '-' ? text + "0ms" : text;
+}
+
 std::optional<__int128> parse_integer_literal(std::string_view text) {
   int base = 10;
   if (const size_t hash = text.find('#'); hash != std::string_view::npos) {
@@ -96,7 +111,7 @@ std::optional<double> parse_real_literal(std::string_view text) {
   return value;
 }
 
-std::optional<__int128> parse_duration_literal(std::string_view text, std::string* error) {
+std::optional<__int128> parse_duration_literal(std::string_view text, std::string* error, const DurationRules& rules) {
   const size_t hash = text.find('#');
   if (hash == std::string_view::npos) return std::nullopt;
   std::string_view rest = text.substr(hash + 1);
@@ -116,6 +131,9 @@ std::optional<__int128> parse_duration_literal(std::string_view text, std::strin
       {"us", 1000},
       {"ns", 1},
   }};
+  // The largest value each unit may have when a larger unit precedes it.
+  constexpr std::array<long double, 7> kLimits = {0, 24, 60, 60, 1000, 1000, 1000};
+  const bool long_time = !text.empty() && (text.front() == 'L' || text.front() == 'l');
   long double total = 0;
   int last_unit = -1;
   long double last_value = 0;
@@ -151,8 +169,21 @@ std::optional<__int128> parse_duration_literal(std::string_view text, std::strin
       if (error) *error = fmt::format("time units must go from days to nanoseconds ('{}' after a smaller or equal unit)", unit);
       return std::nullopt;
     }
+    const long double value = std::strtold(number.c_str(), nullptr);
+    const auto unit_slot = static_cast<size_t>(unit_index);
+    if (!long_time && !rules.sub_millisecond_time && unit_index >= 5) {
+      if (error) *error = fmt::format("a TIME counts milliseconds, '{}' needs an LTIME literal (LTIME#...)", unit);
+      return std::nullopt;
+    }
+    if (rules.later_units_bounded && units > 0 && value >= kLimits[unit_slot]) {
+      if (error) {
+        *error = fmt::format("{}{} after a larger unit must be below {} (only the first unit may overflow)",
+                             static_cast<long long>(value), unit, static_cast<long long>(kLimits[unit_slot]));
+      }
+      return std::nullopt;
+    }
     last_unit = unit_index;
-    last_value = std::strtold(number.c_str(), nullptr);
+    last_value = value;
     total += last_value * kUnits[static_cast<size_t>(unit_index)].second;
     ++units;
     any = true;
@@ -162,8 +193,6 @@ std::optional<__int128> parse_duration_literal(std::string_view text, std::strin
   // is T#4d5h), but the smallest of several may not: T#5m68s is an error (CODESYS textbook,
   // L4198). LTIME has no such rule: the CODESYS V3 manual's own example is
   // LTIME#3445343m3424732874823ns (MP300 manual).
-  const bool long_time = !text.empty() && (text.front() == 'L' || text.front() == 'l');
-  constexpr std::array<long double, 7> kLimits = {0, 24, 60, 60, 1000, 1000, 1000};
   if (!long_time && units > 1 && last_unit > 0 && last_value >= kLimits[static_cast<size_t>(last_unit)]) {
     if (error) {
       *error = fmt::format("the smallest unit overflows ({}{} is {} or more; carry it into the next larger unit)",
@@ -174,6 +203,14 @@ std::optional<__int128> parse_duration_literal(std::string_view text, std::strin
   }
   const __int128 nanoseconds = static_cast<__int128>(total + 0.5L);
   return negative ? -nanoseconds : nanoseconds;
+}
+
+std::string real_range_problem(double value, bool single) {
+  if (!std::isfinite(value)) return "beyond the largest LREAL (about 1.8E308)";
+  if (single && std::fabs(value) > static_cast<double>(std::numeric_limits<float>::max())) {
+    return "beyond the largest REAL (3.4028235E38)";
+  }
+  return {};
 }
 
 namespace {
@@ -325,6 +362,30 @@ std::optional<std::string> parse_string_literal(std::string_view text, bool* wid
     }
   }
   return out;
+}
+
+std::string string_escape_problem(std::string_view text) {
+  if (text.size() < 2) return {};
+  // $hh is a byte; a WSTRING's $hhhh starts with two hex digits as well.
+  constexpr size_t kHexDigits = 2;
+  for (size_t i = 1; i + 1 < text.size(); ++i) {
+    if (text[i] != '$') continue;
+    const size_t next = i + 1;
+    if (next + 1 >= text.size()) return "a '$' at the end of the string escapes nothing (write $$ for a dollar sign)";
+    const char c = lower(text[next]);
+    if (c == '$' || c == '\'' || c == '"' || c == 'l' || c == 'n' || c == 'p' || c == 'r' || c == 't') {
+      i = next;
+      continue;
+    }
+    size_t digits = 0;
+    while (digits < kHexDigits && next + digits + 1 < text.size() && digit_value(text[next + digits]) < 16) ++digits;
+    if (digits == kHexDigits) {
+      i = next + digits - 1;
+      continue;
+    }
+    return fmt::format("'${}' is not an escape: after '$' come $ ' L N P R T or two hex digits", text[next]);
+  }
+  return {};
 }
 
 }  // namespace rung::check

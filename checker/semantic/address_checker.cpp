@@ -104,6 +104,7 @@ class AddressChecker {
       if (symbol.kind == SymbolKind::Variable && symbol.location_node) check_declaration(symbol);
     }
     report_overlaps();
+    check_addresses_in_code();
   }
 
  private:
@@ -138,6 +139,27 @@ class AddressChecker {
       return;
     }
     check_fit(variable, address, node);
+  }
+
+  // `%MX0.8 := TRUE;`: an address written in code must exist as much as a declared one (AK800
+  // manual L970, L1017). AT locations are checked above, VAR_CONFIG and VAR_ACCESS paths by the
+  // configuration checker, and `x.%X3` is a bit of a variable, not an address.
+  void check_addresses_in_code() {
+    const Source& source = model_.source(source_);
+    if (source.library || !source.document->tree()) return;
+    // Every direct address has a '%': most files have none, and then there is nothing to walk.
+    if (source.document->tree()->text().find('%') == std::string::npos) return;
+    walk_preorder(source.document->tree()->root(), [&](SyntaxNode node) {
+      if (node.kind() != "direct_variable") return true;
+      const SyntaxNode parent = node.parent();
+      const std::string_view context = parent ? parent.kind() : std::string_view();
+      if (context == "location" || context == "member_expression" || context == "access_path") return false;
+      const DirectAddressResult parsed = parse_direct_address(node.text(), model_.profile().addressing);
+      if (!parsed.ok()) {
+        report(codes::kInvalidAddress, fmt::format("'{}': {}", node.text(), parsed.error), node.range());
+      }
+      return false;
+    });
   }
 
   // `%I*` / `%Q*` are completed per instance by VAR_CONFIG (MP300 manual L11596-11654).

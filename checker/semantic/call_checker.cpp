@@ -35,12 +35,90 @@ std::vector<Parameter> parameters_of(const Symbol* callee) {
 
 bool is_en_eno(std::string_view name) { return names_equal(name, "EN") || names_equal(name, "ENO"); }
 
-const Parameter* find_parameter(const std::vector<Parameter>& parameters, std::string_view name) {
+// The parameter a formal argument names; for standard functions also by the name a vendor gives
+// it (the stubs' rung.alias: CODESYS's LEFT(STR, SIZE) is IEC's LEFT(IN, L)).
+const Parameter* find_parameter(const std::vector<Parameter>& parameters, std::string_view name, bool by_alias) {
   for (const auto& parameter : parameters) {
     if (names_equal(parameter.symbol->name, name)) return &parameter;
   }
+  if (!by_alias) return nullptr;
+  for (const auto& parameter : parameters) {
+    const Attribute* alias = parameter.symbol->attribute("rung.alias");
+    if (alias && names_equal(alias->value, name)) return &parameter;
+  }
   return nullptr;
 }
+
+// OpenPCS takes the length and position of LEFT, RIGHT and MID as UINT (C10035).
+bool is_string_position(const Symbol* callee, const Parameter& parameter) {
+  const std::string_view name = parameter.symbol->name;
+  if (names_equal(callee->name, "LEFT") || names_equal(callee->name, "RIGHT")) return names_equal(name, "L");
+  if (names_equal(callee->name, "MID")) return names_equal(name, "L") || names_equal(name, "P");
+  return false;
+}
+
+// A FUNCTION keeps nothing between calls, so a call must give every input that has no initial
+// value (CODESYS textbook L3210-3216, OpenPCS L4548); function block calls may leave inputs out,
+// they keep their last values. EN is optional everywhere. A formal call also binds every
+// additional output with => (MP300 manual L11195-11203); an informal call cannot name them.
+// Stubs' outputs are rung's reconstruction of each vendor's, so only user functions' are required.
+void report_missing_parameters(BodyChecker& checker, const Symbol* callee, const std::vector<Parameter>& parameters,
+                               const std::vector<const Parameter*>& given, bool formal, SyntaxNode call) {
+  std::vector<std::string_view> inputs, outputs;
+  for (const Parameter& parameter : parameters) {
+    if (is_en_eno(parameter.symbol->name)) continue;
+    if (std::find(given.begin(), given.end(), &parameter) != given.end()) continue;
+    if (parameter.section == ast::VarSection::Input && !parameter.symbol->has(kHasInitializer)) {
+      inputs.push_back(parameter.symbol->name);
+    } else if (parameter.section == ast::VarSection::Output && formal && !callee->has(kLibrary)) {
+      outputs.push_back(parameter.symbol->name);
+    }
+  }
+  auto quoted = [](const std::vector<std::string_view>& names) {
+    std::string text;
+    for (std::string_view name : names) text += fmt::format("{}'{}'", text.empty() ? "" : ", ", name);
+    return text;
+  };
+  if (!inputs.empty()) {
+    checker.report(codes::kMissingParameter,
+                   fmt::format("the call of FUNCTION '{}' does not give the input{} {}", callee->name,
+                               inputs.size() > 1 ? "s" : "", quoted(inputs)),
+                   call.range(),
+                   formal ? fmt::format("add {} := ... (only function block calls may leave inputs out)", inputs[0])
+                          : "give every input, in declaration order (only function block calls may leave inputs out)");
+  }
+  if (!outputs.empty()) {
+    checker.report(codes::kMissingParameter,
+                   fmt::format("the call of FUNCTION '{}' does not bind the output{} {}", callee->name,
+                               outputs.size() > 1 ? "s" : "", quoted(outputs)),
+                   call.range(), fmt::format("bind it to a variable: {} => ...", outputs[0]));
+  }
+}
+
+// OpenPCS: formal arguments in the order of the declaration (S3047); inputs and outputs each
+// keep their own order, since OpenPCS writes the outputs after '|'.
+// Parameters are compared by their place in one parameters_of() vector.
+class ArgumentOrder {
+ public:
+  void check(BodyChecker& checker, const Symbol* callee, const Parameter& parameter, SyntaxNode name) {
+    const Parameter*& last = parameter.section == ast::VarSection::Output ? last_output_ : last_input_;
+    if (last && &parameter < last && !reported_) {
+      reported_ = true;
+      checker.report(codes::kArgumentOrder,
+                     fmt::format("'{}' is declared before '{}' in '{}': give the formal arguments in that order",
+                                 parameter.symbol->name, last->symbol->name, callee->name),
+                     name.range(),
+                     fmt::format("write {} before {} (OpenPCS passes the arguments in the order written)",
+                                 parameter.symbol->name, last->symbol->name));
+    }
+    if (!last || &parameter > last) last = &parameter;
+  }
+
+ private:
+  const Parameter* last_input_ = nullptr;
+  const Parameter* last_output_ = nullptr;
+  bool reported_ = false;
+};
 
 }  // namespace
 
@@ -78,10 +156,12 @@ ExprInfo BodyChecker::type_call(SyntaxNode call, int depth) {
         return check_call_arguments(call, callee, false, depth);
       case SymbolKind::FunctionBlock:
       case SymbolKind::Class:
-        type_arguments_only();
         report(codes::kNotCallable,
                fmt::format("'{}' is a function block type; call an instance of it", callee->name), function.range(),
                fmt::format("declare an instance (e.g. fb{} : {};) and call that", callee->name, callee->name));
+        // The arguments are still checked against the block's parameters, as the instance call
+        // the author meant would be.
+        check_call_arguments(call, callee, true, depth);
         return unknown;
       case SymbolKind::Variable: {
         const Type* type = underlying(model_.type_of(callee));
@@ -151,6 +231,14 @@ std::vector<CallArgument> call_arguments(SyntaxNode arguments) {
 
 ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, const std::vector<CallArgument>& arguments,
                                       SyntaxNode call, int depth) {
+  if (callee->kind == SymbolKind::Program && pou_.kind == SymbolKind::Function) {
+    // A function keeps no state and may run any number of times per cycle; a program is one
+    // instance with state (AK800 manual L2726, IEC 61131-3 table of POU calls).
+    SyntaxNode name = call.child_by_field("function");
+    report(codes::kInvalidCallTarget,
+           fmt::format("FUNCTION '{}' cannot call the PROGRAM '{}'", pou_.name, callee->name),
+           (name ? name : call).range(), "call the program from another program or from a task");
+  }
   const std::vector<Parameter> parameters = parameters_of(callee);
   const bool is_function = callee->kind == SymbolKind::Function || callee->kind == SymbolKind::Method;
   ExprInfo result{.type = types_.void_type()};
@@ -162,12 +250,19 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
   std::vector<const Parameter*> given;
   size_t positional = 0;
   bool extensible_seen = false;
-  std::vector<const Parameter*> inputs;
+  std::vector<const Parameter*> inputs;  // what informal arguments bind to, in order; EN is never positional
   for (const auto& parameter : parameters) {
-    if (parameter.section == ast::VarSection::Input || parameter.section == ast::VarSection::InOut) inputs.push_back(&parameter);
+    if ((parameter.section == ast::VarSection::Input || parameter.section == ast::VarSection::InOut) &&
+        !is_en_eno(parameter.symbol->name)) {
+      inputs.push_back(&parameter);
+    }
     if (parameter.symbol->has(kExtensible)) extensible_seen = true;
   }
   const bool library_function = callee->has(kLibrary) && callee->kind == SymbolKind::Function;
+  const Profile& profile = model_.profile();
+  bool formal = false;
+  bool vendor_names = false;  // a standard function's argument under a name the stub does not know
+  ArgumentOrder order;
   for (const CallArgument& argument : arguments) {
     const bool output = argument.output;
     SyntaxNode name = argument.name;
@@ -177,12 +272,16 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
                                   : ExprInfo{.type = types_.unknown()};
     const Parameter* parameter = nullptr;
     if (name) {
+      formal = true;
       if (is_en_eno(name.text())) continue;
-      parameter = find_parameter(parameters, name.text());
+      parameter = find_parameter(parameters, name.text(), library_function);
       if (!parameter) {
         // Standard functions: vendors name the parameters differently (IEC LEFT(IN, L), CODESYS
         // and TwinCAT LEFT(STR, SIZE)); extensible ones take IN3, IN4 ... beyond IN2.
-        if (library_function) continue;
+        if (library_function) {
+          vendor_names = true;
+          continue;
+        }
         std::vector<std::string_view> names;
         for (const auto& p : parameters) names.push_back(p.symbol->name);
         const std::string_view suggestion = closest_name(name.text(), names);
@@ -196,6 +295,7 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
         }
       }
       given.push_back(parameter);
+      if (profile.formal_arguments_in_order) order.check(*this, callee, *parameter, name);
       if (output && parameter->section != ast::VarSection::Output) {
         report(codes::kWrongArgumentDirection,
                fmt::format("'{}' is an input; use '{} := value'", parameter->symbol->name, parameter->symbol->name),
@@ -220,6 +320,9 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
     }
     if (!parameter || !value) continue;
     const Type* parameter_type = model_.type_of(parameter->symbol);
+    if (profile.string_positions_are_uint && library_function && is_string_position(callee, *parameter)) {
+      parameter_type = types_.elementary("UINT");
+    }
     if (parameter->section == ast::VarSection::InOut && !value_info.assignable && !value_info.value &&
         !value_info.type->is_unknown()) {
       report(codes::kInOutNotAssignable,
@@ -232,7 +335,7 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
     if (output) {
       // The output's value flows into the target variable.
       if (value_info.assignable || value_info.type->is_unknown()) {
-        check_conversion(ExprInfo{.type = parameter_type}, value_info.type, value);
+        check_conversion(ExprInfo{.type = parameter_type, .symbol = parameter->symbol}, value_info.type, value);
       }
       continue;
     }
@@ -251,6 +354,10 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
              fmt::format("VAR_IN_OUT '{}' of '{}' is not connected", parameter.symbol->name, callee->name), call.range(),
              fmt::format("pass a variable: {} := ...", parameter.symbol->name));
     }
+  }
+  if (callee->kind == SymbolKind::Function && !instance_call && !vendor_names &&
+      !callee->attribute("rung.interface_assumed")) {
+    report_missing_parameters(*this, callee, parameters, given, formal, call);
   }
   if (is_function && result.type->kind == TypeKind::Generic) {
     if (!model_.profile().generic_arguments_widen) check_one_generic_type(callee, bound, bound_where);

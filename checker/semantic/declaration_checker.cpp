@@ -9,6 +9,7 @@
 #include "checker/semantic/body_checker.hpp"
 #include "checker/semantic/configuration_checker.hpp"
 #include "checker/semantic/initializer_checker.hpp"
+#include "checker/semantic/limits_checker.hpp"
 #include "checker/semantic/name_checker.hpp"
 #include "parser/diagnostic_codes.hpp"
 
@@ -529,6 +530,7 @@ class DeclarationChecker {
 void check_declarations(const ProjectModel& model, SourceId source, std::vector<Diagnostic>& out) {
   DeclarationChecker(model, source, out).run();
   check_names(model, source, out);
+  check_limits(model, source, out);
   check_addresses(model, source, out);
   check_configurations(model, source, out);
 }

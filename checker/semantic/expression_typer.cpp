@@ -1,9 +1,13 @@
 // What an expression is: its type, the declaration it names, its constant value.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "checker/constant/const_eval.hpp"
 #include "checker/semantic/body_checker.hpp"
 #include "checker/semantic/builtins.hpp"
+#include "checker/semantic/il_checker.hpp"
+#include "checker/semantic/pragma_checker.hpp"
 #include "parser/diagnostic_codes.hpp"
 
 namespace rung::check {
@@ -17,6 +21,56 @@ bool is_comparison(std::string_view op) {
 
 bool is_logical(std::string_view op) {
   return op == "AND" || op == "&" || op == "OR" || op == "XOR" || op == "AND_THEN" || op == "OR_ELSE";
+}
+
+// A variable of a {attribute 'qualified_only'} list or a value of such an enum written without
+// its qualifier: the name exists, so "not declared" would send the user the wrong way.
+void report_qualified_only(BodyChecker& checker, const Symbol* hidden, SyntaxNode name, SourceId here) {
+  const Symbol* owner = hidden->owner;
+  const std::string_view owner_name = owner ? owner->name : std::string_view("?");
+  const bool list = owner && owner->kind == SymbolKind::GlobalList;
+  std::vector<DiagnosticLabel> labels;
+  if (hidden->source == here) labels.push_back({hidden->name_range, "declared here"});
+  checker.report(codes::kQualifiedAccessRequired,
+                 fmt::format("'{}' is in the {} '{}', which has {{attribute 'qualified_only'}}", name.text(),
+                             list ? "global variable list" : "enumeration", owner_name),
+                 name.range(), fmt::format("write {}.{}", owner_name, hidden->name), std::move(labels));
+}
+
+// An enum value written without its type while two enumerations define that name (002 L14524-
+// 14561: colors_1.blue and colors_2.blue are fine, a bare blue is an error). Project enums hide
+// library ones of the same name, as project POUs hide library POUs. Returns whether it reported.
+bool report_ambiguous_enum_value(BodyChecker& checker, const ProjectModel& model, const Symbol* value, SyntaxNode name,
+                                 SourceId here) {
+  const auto* candidates = model.find_enum_values(value->name);
+  if (!candidates) return false;
+  std::vector<const Symbol*> enums;
+  for (const Symbol* candidate : *candidates) {
+    if (candidate->has(kLibrary) != value->has(kLibrary) || !candidate->owner) continue;
+    if (std::find(enums.begin(), enums.end(), candidate->owner) == enums.end()) enums.push_back(candidate->owner);
+  }
+  if (enums.size() < 2) return false;
+  std::vector<DiagnosticLabel> labels;
+  for (const Symbol* candidate : *candidates) {
+    if (candidate->source == here && candidate->has(kLibrary) == value->has(kLibrary)) {
+      labels.push_back({candidate->name_range, fmt::format("a value of '{}'", candidate->owner->name)});
+    }
+  }
+  checker.report(codes::kAmbiguousName,
+                 fmt::format("'{}' is ambiguous: it is a value of both '{}' and '{}'{}", name.text(), enums[0]->name,
+                             enums[1]->name, enums.size() > 2 ? " (and more)" : ""),
+                 name.range(),
+                 fmt::format("write the enumeration's name in front: {}.{} or {}.{}", enums[0]->name, value->name,
+                             enums[1]->name, value->name),
+                 std::move(labels));
+  return true;
+}
+
+// Values that can never have a member after '.': elementary values, strings, subranges, arrays
+// (an enumeration's values are reached through its type name, not through a variable).
+bool has_no_members(const Type* type) {
+  if (type->kind == TypeKind::Subrange || type->kind == TypeKind::Array) return true;
+  return type->kind != TypeKind::Enum && is_elementary(type);
 }
 
 }  // namespace
@@ -51,6 +105,8 @@ ExprInfo BodyChecker::type_expression(SyntaxNode expression, int depth) {
     case ast::ExpressionKind::DirectAddress:
       return ExprInfo{.type = types_.unknown(), .assignable = true};
     default:
+      if (expression.kind() == "global_reference") return type_identifier(expression);
+      if (expression.kind() == "il_expression") return IlChecker(*this, model_, pou_).value_of(expression);
       // Initializers, assignment expressions: their parts are still checked for names.
       for (uint32_t i = 0; i < expression.named_child_count(); ++i) {
         SyntaxNode child = expression.named_child(i);
@@ -117,16 +173,21 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
   }
   if (kind == "time_literal") {
     std::string problem;
-    auto value = parse_duration_literal(literal.text(), &problem);
+    const Profile& profile = model_.profile();
+    auto value = parse_duration_literal(literal.text(), &problem, profile.duration_rules);
     const std::string_view text = literal.text();
     info.type = types_.elementary(!text.empty() && (text[0] == 'L' || text[0] == 'l') ? "LTIME" : "TIME");
-    // TIME is 32 bits of milliseconds: T#49d17h2m47s295ms (CODESYS writes T#71582m47s295ms).
-    constexpr __int128 kMaxTimeNanoseconds = static_cast<__int128>(0xFFFFFFFFll) * 1'000'000;
+    // TIME is 32 bits of milliseconds, unsigned in CODESYS (T#49d17h2m47s295ms), signed in OpenPCS.
+    const __int128 max_time_nanoseconds = static_cast<__int128>(profile.max_time_milliseconds) * 1'000'000;
     if (!value && !problem.empty()) {
+      const bool needs_ltime = problem.find("LTIME") != std::string::npos;
       report(codes::kLiteralOutOfRange, fmt::format("invalid duration '{}': {}", text, problem), literal.range(),
-             "write the units from the largest to the smallest, the last one within its range: T#1d2h3m4s5ms");
-    } else if (value && info.type->name == "TIME" && (*value > kMaxTimeNanoseconds || *value < -kMaxTimeNanoseconds)) {
-      report(codes::kLiteralOutOfRange, fmt::format("'{}' does not fit in a TIME (at most T#49d17h2m47s295ms)", text),
+             needs_ltime ? "write an LTIME#... literal, or round to milliseconds"
+                         : "write the units from the largest to the smallest, the last one within its range: T#1d2h3m4s5ms");
+    } else if (value && info.type->name == "TIME" && (*value > max_time_nanoseconds || *value < -max_time_nanoseconds)) {
+      report(codes::kLiteralOutOfRange,
+             fmt::format("'{}' does not fit in a TIME (at most {})", text,
+                         duration_literal_text(max_time_nanoseconds)),
              literal.range(), "use LTIME for longer durations");
     } else if (value) {
       info.value = ConstValue::of_duration(*value);
@@ -134,6 +195,10 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
     return info;
   }
   if (kind == "string_literal") {
+    if (const std::string problem = string_escape_problem(literal.text()); !problem.empty()) {
+      report(codes::kLiteralOutOfRange, fmt::format("invalid string literal: {}", problem), literal.range(),
+             "write $$ for a dollar sign");
+    }
     bool wide = false;
     auto text = parse_string_literal(literal.text(), &wide);
     if (text) {
@@ -180,6 +245,11 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
         report(codes::kLiteralOutOfRange,
                fmt::format("'{}' has a fraction: it does not fit into {} without loss", literal.text(), type->name),
                literal.range(), fmt::format("write an integer, or use REAL_TO_{}()", type->name));
+      } else if (value->kind == ConstValue::Kind::Real && type->kind == TypeKind::Real) {
+        if (const std::string problem = real_range_problem(value->real, type->bits == 32); !problem.empty()) {
+          report(codes::kLiteralOutOfRange, fmt::format("'{}' does not fit into {}: {}", literal.text(), type->name, problem),
+                 literal.range(), type->bits == 32 ? "use LREAL" : std::string());
+        }
       }
       info.value = value;
     }
@@ -193,6 +263,13 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
     }
     return info;
   }
+  if (value->kind == ConstValue::Kind::Real) {
+    // Only a value beyond LREAL is wrong here; REAL or LREAL is decided where it is stored.
+    if (const std::string problem = real_range_problem(value->real, false); !problem.empty()) {
+      report(codes::kLiteralOutOfRange, fmt::format("'{}' is {}", literal.text(), problem), literal.range());
+      return info;
+    }
+  }
   info.value = value;
   info.untyped_literal = value->kind != ConstValue::Kind::Bool;
   // 2#, 8#, 16#: a bit pattern; 10#30000 is just a decimal number.
@@ -204,13 +281,7 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
 
 ExprInfo BodyChecker::info_for_symbol(const Symbol* symbol, SyntaxNode where) {
   ExprInfo info{.type = types_.unknown(), .symbol = symbol};
-  if (symbol->has(kObsolete) && !inside(*symbol)) {
-    const Attribute* obsolete = symbol->attribute("obsolete");
-    report(codes::kObsolete,
-           fmt::format("'{}' is obsolete{}", symbol->name,
-                       obsolete && !obsolete->value.empty() ? ": " + obsolete->value : std::string()),
-           where.range());
-  }
+  if (symbol->has(kObsolete) && !inside(*symbol)) out_.push_back(obsolete_use(*symbol, where.range()));
   switch (symbol->kind) {
     case SymbolKind::Variable:
       info.type = model_.type_of(symbol);
@@ -245,21 +316,43 @@ ExprInfo BodyChecker::info_for_symbol(const Symbol* symbol, SyntaxNode where) {
   }
 }
 
+// Also `.x` (a global_reference): CODESYS's global scope operator names the global x even where
+// a local x hides it (002 L10254-10263).
 ExprInfo BodyChecker::type_identifier(SyntaxNode identifier) {
-  const std::string_view name = identifier.text();
   if (identifier.kind() == "qualified_name") {
     return ExprInfo{.type = types_.unknown()};  // namespaces written as a.b.c in declarations
   }
-  if (const Symbol* symbol = model_.lookup(&pou_, name)) return info_for_symbol(symbol, identifier);
+  const bool global_only = identifier.kind() == "global_reference";
+  SyntaxNode name_node = global_only ? identifier.child_by_field("name") : identifier;
+  if (!name_node) return ExprInfo{.type = types_.unknown()};
+  const std::string_view name = name_node.text();
+  if (const Symbol* symbol = global_only ? model_.lookup_global(name) : model_.lookup(&pou_, name)) {
+    if (symbol->kind == SymbolKind::EnumValue && report_ambiguous_enum_value(*this, model_, symbol, name_node, pou_.source)) {
+      return ExprInfo{.type = types_.unknown()};  // which enum it is stays open: no follow-up errors
+    }
+    return info_for_symbol(symbol, name_node);
+  }
   if (model_.is_library_namespace(name)) return ExprInfo{.type = types_.unknown(), .names_namespace = true};
-  if (sfc_names_.contains(upper_name(name))) return ExprInfo{.type = types_.unknown(), .assignable = true};
-  if (const Builtin* builtin = find_builtin(name)) {
-    return ExprInfo{.type = builtin->value_type ? types_.elementary(builtin->value_type) : types_.unknown(),
-                    .names_namespace = builtin->is_namespace};
+  if (!global_only) {
+    if (sfc_names_.contains(upper_name(name))) return ExprInfo{.type = types_.unknown(), .assignable = true};
+    if (const Builtin* builtin = find_builtin(name)) {
+      return ExprInfo{.type = builtin->value_type ? types_.elementary(builtin->value_type) : types_.unknown(),
+                      .names_namespace = builtin->is_namespace};
+    }
+  }
+  if (const Symbol* hidden = model_.find_qualified_only(name)) {
+    report_qualified_only(*this, hidden, name_node, pou_.source);
+    return info_for_symbol(hidden, name_node);
+  }
+  if (global_only) {
+    report(codes::kUndeclaredName, fmt::format("there is no global variable '{}'", name), identifier.range(),
+           fmt::format("'.{}' names a global only; write '{}' for a local or parameter", name, name));
+    return ExprInfo{.type = types_.unknown(), .assignable = true};
   }
   if (!model_.has_unresolved_base(&pou_)) report_undeclared(identifier);
   return ExprInfo{.type = types_.unknown(), .assignable = true};
 }
+
 
 void BodyChecker::report_undeclared(SyntaxNode name) {
   const std::vector<std::string_view> candidates = model_.visible_names(&pou_);
@@ -290,15 +383,23 @@ ExprInfo BodyChecker::type_member(SyntaxNode expression, int depth) {
   ExprInfo unknown{.type = types_.unknown(), .assignable = true};
   if (!member_node) return unknown;
   const std::string_view member = member_node.text();
-  // Bit access: w.3, and CODESYS constant bit numbers w.cBit.
-  if (member_node.kind() == "integer_literal") {
+  // Bit access: w.3, and CODESYS constant bit numbers w.cBit (a CONSTANT of an integer type).
+  const bool literal_bit = member_node.kind() == "integer_literal";
+  std::optional<ConstValue> constant_bit;
+  if (!literal_bit && member_node.kind() == "identifier" && !object.names_type && !object.names_namespace &&
+      underlying(object.type)->kind != TypeKind::Enum && is_any_int_or_bit(arithmetic_type(object.type))) {
+    constant_bit = model_.constant_value(member_node, &pou_);
+    if (constant_bit && !constant_bit->is_integer()) constant_bit.reset();
+  }
+  if (literal_bit || constant_bit) {
     const Type* base = arithmetic_type(object.type);
     // IEC: bits of bit strings only (OpenPCS S5031: not of a DINT); CODESYS: of integers too.
     const bool bits_of_integer = is_integer(base) && !model_.profile().bits_and_integers_mix;
     if (!base->is_unknown() && is_any_int_or_bit(base) && !bits_of_integer) {
-      auto bit = parse_integer_literal(member);
-      if (bit && base->bits && *bit >= base->bits) {
-        report(codes::kIndexOutOfRange, fmt::format("bit {} does not exist in {} ({} bits)", member, base->name, base->bits),
+      auto bit = literal_bit ? parse_integer_literal(member) : std::optional<__int128>(constant_bit->integer);
+      if (bit && base->bits && (*bit >= base->bits || *bit < 0)) {
+        report(codes::kIndexOutOfRange,
+               fmt::format("bit {} does not exist in {} ({} bits)", int128_to_string(*bit), base->name, base->bits),
                member_node.range());
       }
     } else if (!base->is_unknown() && base->kind != TypeKind::Bool) {
@@ -314,6 +415,9 @@ ExprInfo BodyChecker::type_member(SyntaxNode expression, int depth) {
     if (qualifier && qualifier->kind == SymbolKind::GlobalList) {
       if (const Symbol* found = model_.find_member(qualifier, member)) return info_for_symbol(found, member_node);
       // Lists of the same name in other files (TwinCAT GVLs split in several objects).
+      if (const Symbol* variable = model_.find_in_global_lists(qualifier->name, member)) {
+        return info_for_symbol(variable, member_node);
+      }
       if (const Symbol* variable = model_.find_global_variable(member)) return info_for_symbol(variable, member_node);
       report(codes::kUnknownMember, fmt::format("global variable list '{}' has no variable '{}'", qualifier->name, member),
              member_node.range());
@@ -338,6 +442,19 @@ ExprInfo BodyChecker::type_member(SyntaxNode expression, int depth) {
   }
   const Type* type = underlying(object.type);
   if (type->kind == TypeKind::Reference && type->element) type = underlying(type->element);
+  if (has_no_members(type) && (!object.symbol || object.symbol->kind == SymbolKind::Variable)) {
+    // i.a with i : INT (OpenPCS S3006). A POU's name stands for its result inside it, so
+    // F.x there is left alone.
+    const Type* base = arithmetic_type(type);
+    const bool bits = is_bit_string(base) || (is_integer(base) && model_.profile().bits_and_integers_mix);
+    report(codes::kUnknownMember,
+           fmt::format("'{}' is {}, which has no members: '{}' cannot follow the '.'", object_node.text(),
+                       object.type->name, member),
+           member_node.range(),
+           bits ? "bit access needs a bit number: a literal (w.3) or a CONSTANT"
+                : "only structures and function block instances have members");
+    return unknown;
+  }
   if (type->is_unknown() || !type->declaration) return unknown;
   if (type->kind == TypeKind::Pointer) return unknown;
   const Symbol* container = type->declaration;
@@ -642,8 +759,18 @@ ExprInfo BodyChecker::binary_result(std::string_view op, const ExprInfo& left, c
   const bool a_num = is_numeric(a) || (ak == TypeKind::Bit && model_.profile().bits_and_integers_mix);
   const bool b_num = is_numeric(b) || (bk == TypeKind::Bit && model_.profile().bits_and_integers_mix);
   if (!a_num || !b_num) {
-    if ((ak == TypeKind::Bit || bk == TypeKind::Bit) && !is_string_like(a) && !is_string_like(b) && ak != TypeKind::Bool && bk != TypeKind::Bool) {
-      result.type = ak == TypeKind::Bit ? a : b;  // IEC: bit strings are not numbers, but let it pass once
+    const bool bits_and_numbers = (ak == TypeKind::Bit || bk == TypeKind::Bit) && !is_string_like(a) &&
+                                  !is_string_like(b) && ak != TypeKind::Bool && bk != TypeKind::Bool;
+    if (bits_and_numbers && !model_.profile().bit_string_arithmetic) {
+      // IEC: bit strings are not numbers (OpenPCS S3035: LD BitMask / SUB 3 with a WORD).
+      const Type* bits = ak == TypeKind::Bit ? left.type : right.type;
+      report(codes::kInvalidOperand, fmt::format("'{}' is not defined for the bit string {}", name, bits->name), range,
+             fmt::format("convert it to a number first: {}_TO_UINT() (or UDINT, ULINT)", arithmetic_type(bits)->name));
+      result.type = ak == TypeKind::Bit ? a : b;
+      return result;
+    }
+    if (bits_and_numbers) {
+      result.type = ak == TypeKind::Bit ? a : b;  // a bit string with a number where they do not mix: one error at the assignment
       return result;
     }
     report(codes::kInvalidOperand,

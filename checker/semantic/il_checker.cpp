@@ -132,6 +132,17 @@ void IlChecker::check(SyntaxNode il_body, bool transition) {
   }
 }
 
+ExprInfo IlChecker::value_of(SyntaxNode il_expression) {
+  // Like the one-line deferred operator MUL (2 ADD 3): the operand loads, the rest applies to it.
+  ExprInfo value = operand_value(il_expression.child_by_field("operand"));
+  value.assignable = false;
+  current_ = CurrentResult{true, value};
+  check_sequence(il_expression, 1, false);
+  ExprInfo result = current_.info;
+  result.assignable = false;
+  return result;
+}
+
 void IlChecker::collect_labels(SyntaxNode node) {
   std::map<std::string, SyntaxNode> seen;
   std::vector<SyntaxNode> stack{node};

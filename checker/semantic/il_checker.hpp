@@ -23,6 +23,8 @@ class IlChecker {
 
   // Checks one il_body. A transition's code ends with its condition in the CR, which must be BOOL.
   void check(SyntaxNode il_body, bool transition = false);
+  // The value of an il_expression, `(a ADD b)` as a CAL argument (OpenPCS S5034).
+  ExprInfo value_of(SyntaxNode il_expression);
 
  private:
   struct CurrentResult {

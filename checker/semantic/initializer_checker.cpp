@@ -204,8 +204,9 @@ class InitializerChecker {
 
 void check_initial_value(const ProjectModel& model, const Symbol& owner, const Symbol& variable,
                          std::vector<Diagnostic>& out) {
+  if (!(variable.flags & kHasInitializer) || variable.name.empty()) return;  // most have none: no walk
   SyntaxNode value = variable.node.child_by_field("value");
-  if (!value || variable.name.empty()) return;
+  if (!value) return;
   // `a, b : INT := 300` shares one value: only the first name reports, once.
   const std::vector<SyntaxNode> names = variable.node.children_by_field("name");
   if (names.empty() || names.front().range().begin != variable.name_range.begin) return;

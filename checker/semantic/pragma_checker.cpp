@@ -55,16 +55,7 @@ class PragmaChecker {
 
   void run(const SyntaxTree& tree) {
     std::vector<project::ConditionalPragma> conditional;
-    std::vector<SyntaxNode> stack{tree.root()};
-    while (!stack.empty()) {
-      SyntaxNode node = stack.back();
-      stack.pop_back();
-      if (node.kind() == "pragma") {
-        visit(node, conditional);
-        continue;
-      }
-      for (uint32_t i = node.child_count(); i-- > 0;) stack.push_back(node.child(i));
-    }
+    for_each_pragma(tree.root(), [&](SyntaxNode pragma) { visit(pragma, conditional); });
     // Conditional pragmas stay in the text even inside inactive branches, so the structure of
     // every group can be checked here; their conditions were evaluated when the file was loaded.
     for (Diagnostic& diagnostic : project::check_conditional_pragmas(tree.text(), conditional)) {
@@ -138,12 +129,64 @@ class PragmaChecker {
   std::vector<Diagnostic>& out_;
 };
 
+// The obsolete declaration a declared type is made of, looking through ARRAY OF, POINTER TO and
+// REFERENCE TO; nullptr when there is none.
+const Symbol* obsolete_part(const Type* type) {
+  for (int depth = 0; type && depth < 16; ++depth) {
+    type = underlying(type);
+    if (type->declaration && type->declaration->has(kObsolete)) return type->declaration;
+    if (type->kind != TypeKind::Array && type->kind != TypeKind::Pointer && type->kind != TypeKind::Reference) break;
+    type = type->element;
+  }
+  return nullptr;
+}
+
+bool declared_inside(const Symbol& symbol, const Symbol* scope) {
+  for (const Symbol* s = symbol.owner; s; s = s->owner) {
+    if (s == scope) return true;
+  }
+  return false;
+}
+
+std::string_view last_segment(std::string_view name) {
+  const size_t dot = name.rfind('.');
+  return dot == std::string_view::npos ? name : name.substr(dot + 1);
+}
+
+// CODESYS warns wherever an obsolete type is used, declarations included (002 L12791-12807:
+// `fbinst : fb1` with fb1 marked obsolete). Uses in bodies are reported when they are typed.
+void check_obsolete_types(const Source& file, std::vector<Diagnostic>& out) {
+  for (const Symbol& symbol : file.symbols.storage) {
+    if (symbol.kind == SymbolKind::Variable || (is_pou_kind(symbol.kind) && symbol.result_type)) {
+      const Symbol* obsolete = obsolete_part(symbol.kind == SymbolKind::Variable ? symbol.type : symbol.result_type);
+      if (obsolete && symbol.type_node && !declared_inside(symbol, obsolete)) {
+        out.push_back(obsolete_use(*obsolete, symbol.type_node.range()));
+      }
+    }
+    for (const Symbol* base : symbol.bases) {
+      if (!base->has(kObsolete)) continue;
+      for (SyntaxNode written : symbol.base_nodes) {
+        if (names_equal(last_segment(written.text()), base->name)) out.push_back(obsolete_use(*base, written.range()));
+      }
+    }
+  }
+}
+
 }  // namespace
+
+Diagnostic obsolete_use(const Symbol& obsolete, TextRange where) {
+  const Attribute* attribute = obsolete.attribute("obsolete");
+  return make_diagnostic(codes::kObsolete,
+                         fmt::format("'{}' is obsolete{}", obsolete.name,
+                                     attribute && !attribute->value.empty() ? ": " + attribute->value : std::string()),
+                         where);
+}
 
 void check_pragmas(const ProjectModel& model, SourceId source, std::vector<Diagnostic>& out) {
   const Source& file = model.source(source);
   if (file.library || !file.document->tree()) return;
   PragmaChecker(out).run(*file.document->tree());
+  check_obsolete_types(file, out);
 }
 
 }  // namespace rung::check

@@ -10,7 +10,11 @@
 
 namespace rung::check {
 
-// Appends the findings for the pragmas of `source` (tree coordinates).
+// Appends the findings for the pragmas of `source` (tree coordinates), and E601 for every
+// declaration whose type is marked {attribute 'obsolete'} (fbinst : fb1, EXTENDS fb1).
 void check_pragmas(const ProjectModel& model, SourceId source, std::vector<Diagnostic>& out);
+
+// E601 for a use of `obsolete` (a symbol with {attribute 'obsolete' := 'text'}) at `where`.
+Diagnostic obsolete_use(const Symbol& obsolete, TextRange where);
 
 }  // namespace rung::check

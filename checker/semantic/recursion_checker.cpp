@@ -10,6 +10,7 @@
 
 #include "checker/project_model.hpp"
 #include "parser/diagnostic_codes.hpp"
+#include "parser/parallel_for.hpp"
 
 namespace rung::check {
 namespace {
@@ -63,17 +64,14 @@ class EdgeCollector {
 
   // Every call in the body: F(), fbInstance(), Program(), instance.Method(), Action().
   void collect_calls(const Symbol* pou, SyntaxNode body) {
-    std::vector<SyntaxNode> stack{body};
-    while (!stack.empty()) {
-      SyntaxNode node = stack.back();
-      stack.pop_back();
+    walk_preorder(body, [&](SyntaxNode node) {
+      if (!node.is_named()) return false;
       if (node.kind() == "call_expression") {
         SyntaxNode function = node.child_by_field("function");
         if (const Symbol* callee = callee_of(pou, function)) out_.push_back({pou, callee, function.range(), false});
       }
-      std::vector<SyntaxNode> children = node.named_children();
-      stack.insert(stack.end(), children.rbegin(), children.rend());
-    }
+      return true;
+    });
   }
 
   const Symbol* pou_of_instance(const Symbol* variable) const {
@@ -243,7 +241,8 @@ Diagnostic cycle_diagnostic(const CallEdge& edge, const std::vector<const Symbol
 
 void RecursionIndex::rebuild(const ProjectModel& model) {
   edges_.assign(model.source_count(), {});
-  for (SourceId id = 0; id < model.source_count(); ++id) edges_[id] = edges_of_source(model, id);
+  parallel_for(model.source_count(), model.threads(),
+               [&](size_t id) { edges_[id] = edges_of_source(model, static_cast<SourceId>(id)); });
   find_cycles(model);
 }
 

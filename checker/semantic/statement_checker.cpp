@@ -7,9 +7,32 @@
 #include "checker/constant/const_eval.hpp"
 #include "checker/semantic/body_checker.hpp"
 #include "checker/semantic/il_checker.hpp"
+#include "checker/semantic/sfc_checker.hpp"
 #include "parser/diagnostic_codes.hpp"
 
 namespace rung::check {
+namespace {
+
+// A STRING(n) variable stored in a shorter STRING(m): the rest is cut off at run time (OpenPCS
+// warning S3048, decided from the declarations). Only values whose length is declared: variables,
+// their members and elements, constants; not the results of generic string functions, whose
+// length rung does not track.
+void check_string_length(BodyChecker& checker, const ExprInfo& value, const Type* to, SyntaxNode where) {
+  const Type* from = underlying(value.type);
+  if (from->kind == TypeKind::Reference && from->element) from = underlying(from->element);
+  if (!is_string_like(from) || from->kind != to->kind || from->length <= to->length || to->length == 0) return;
+  const bool declared = value.assignable || (value.symbol && value.symbol->kind == SymbolKind::Variable);
+  if (!declared || value.untyped_literal) return;
+  checker.report(codes::kStringTooLong,
+                 fmt::format("{} is stored in {}: up to {} characters may be cut off", value.type->name, to->name,
+                             from->length - to->length),
+                 where.range(),
+                 fmt::format("declare the target {}({}) or cut the text explicitly with LEFT()",
+                             to->kind == TypeKind::WString ? "WSTRING" : "STRING", from->length));
+}
+
+}  // namespace
+
 BodyChecker::BodyChecker(const ProjectModel& model, const Symbol& pou, std::vector<Diagnostic>& out)
     : model_(model), pou_(pou), out_(out), types_(model.types()) {}
 
@@ -60,6 +83,7 @@ void BodyChecker::check_body(SyntaxNode body) {
         }
       }
     }
+    check_sfc_network(*this, model_, pou_, body);
     return;
   }
   if (body.kind() == "il_body") {
@@ -125,6 +149,10 @@ void BodyChecker::check_statement(SyntaxNode statement) {
   if (statement.is_error() || statement.has_error()) {
     // Broken statements: still look at the parts that parsed, but no structural checks.
     if (statement.is_error()) return;
+  }
+  if (statement.kind() == "sfc_step_macro") {
+    report_step_macro_in_st(*this, statement);
+    return;
   }
   switch (ast::statement_kind(statement)) {
     case ast::StatementKind::Assignment:
@@ -196,6 +224,7 @@ void BodyChecker::check_statement(SyntaxNode statement) {
 const Symbol* BodyChecker::enum_value_for(const Type* target, SyntaxNode value) const {
   // MatIEC's candidate types: where an enum is expected, a bare name that is one of its values
   // means that value, even if a variable of the same name exists (Mode := HOA_HAND).
+  if (!model_.profile().enum_values_typed_by_context) return nullptr;  // CODESYS: the name decides alone
   const Type* type = underlying(target);
   if (!type || type->kind != TypeKind::Enum || !type->declaration || !value || value.kind() != "identifier") {
     return nullptr;
@@ -255,6 +284,20 @@ bool BodyChecker::check_assignment_target(const ExprInfo& target, SyntaxNode whe
     if (target.symbol->has(kConstant)) {
       report(codes::kAssignToConstant, fmt::format("'{}' is a CONSTANT and cannot be assigned", target.symbol->name),
              where.range(), {}, {{target.symbol->name_range, "declared CONSTANT here"}});
+      return false;
+    }
+    // A VAR_EXTERNAL without CONSTANT still names the CONSTANT global (OpenPCS linker L12003).
+    if (const Symbol* global = target.symbol->section == ast::VarSection::External
+                                   ? model_.find_linked_global(target.symbol->name)
+                                   : nullptr;
+        global && global->has(kConstant)) {
+      std::vector<DiagnosticLabel> labels;
+      if (global->source == pou_.source) labels.push_back({global->name_range, "declared VAR_GLOBAL CONSTANT here"});
+      report(codes::kAssignToConstant,
+             fmt::format("'{}' is a VAR_GLOBAL CONSTANT and cannot be assigned through its VAR_EXTERNAL",
+                         target.symbol->name),
+             where.range(), "a CONSTANT global is read-only everywhere; copy it into a variable to work with a changed value",
+             std::move(labels));
       return false;
     }
     if (target.read_only_output) {
@@ -345,6 +388,13 @@ void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, Sy
       }
       return;
     }
+    if (constant.kind == ConstValue::Kind::Real && base->kind == TypeKind::Real && base->bits == 32) {
+      if (const std::string problem = real_range_problem(constant.real, true); !problem.empty()) {
+        report(codes::kLiteralOutOfRange, fmt::format("'{}' does not fit into {}: {}", where.text(), target->name, problem),
+               where.range(), "use LREAL");
+      }
+      return;
+    }
     if (constant.kind == ConstValue::Kind::String && is_string_like(to)) {
       if (constant.text.size() > to->length) {
         report(codes::kStringTooLong,
@@ -359,6 +409,7 @@ void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, Sy
   switch (convertibility(value.type, target, profile)) {
     case Convertibility::Same:
     case Convertibility::Implicit:
+      check_string_length(*this, value, to, where);
       return;
     case Convertibility::Narrowing:
       if (profile.narrowing_is_error) {

@@ -146,17 +146,8 @@ class Collector {
   // `b : arrey[0..5] OF INT;` parses as a declaration of type INT after an error, and
   // `x, y : at%I0.0;` as one of type `at`: the type the recovery found is a guess, and checking against it would only add follow-on errors. Such a
   // variable gets the Unknown type.
-  static bool type_is_reliable(const ast::VarDeclaration& declaration) {
-    SyntaxNode type = declaration.type();
-    if (!type || type.has_error()) return false;
-    SyntaxNode node = declaration.node();
-    SyntaxNode initial_value = declaration.initial_value();
-    const uint32_t limit = initial_value ? initial_value.begin() : node.end();  // errors in the value do not matter
-    for (uint32_t i = 0; i < node.child_count(); ++i) {
-      SyntaxNode child = node.child(i);
-      if ((child.is_error() || child.is_missing()) && child.begin() < limit) return false;
-    }
-    return true;
+  static bool type_is_reliable(const ast::VarDeclaration::Parts& parts) {
+    return parts.type && !parts.type.has_error() && !parts.error_before_value;
   }
 
   // Adds `member` to `owner`'s scope; a second declaration of a name is E003 (first one wins).
@@ -237,25 +228,29 @@ class Collector {
     if (block.has_qualifier("RETAIN")) flags |= kRetain;
     if (block.has_qualifier("PERSISTENT")) flags |= kPersistent;
     const std::vector<Attribute> block_attributes = attributes_before(block.node());
+    const ChildAttributes declared = attributes_of_children(block.node());
     for (const ast::VarDeclaration& declaration : block.declarations()) {
-      add_variables(owner, declaration, section, flags, block_attributes);
+      add_variables(owner, declaration, section, flags, block_attributes, declared);
     }
   }
 
   void add_variables(Symbol& owner, const ast::VarDeclaration& declaration, ast::VarSection section, uint32_t flags,
-                     const std::vector<Attribute>& inherited) {
-    std::vector<Attribute> attributes = attributes_before(declaration.node());
+                     const std::vector<Attribute>& inherited, const ChildAttributes& declared) {
+    const auto own = declared.find(declaration.node().begin());
+    std::vector<Attribute> attributes = own == declared.end() ? std::vector<Attribute>{} : own->second;
     for (const auto& attribute : inherited) {
       if (attribute.name == "hide_all_locals") attributes.push_back(attribute);
     }
-    for (SyntaxNode name : declaration.names()) {
+    const ast::VarDeclaration::Parts parts = declaration.parts();
+    const SyntaxNode type = type_is_reliable(parts) ? parts.type : SyntaxNode();
+    for (SyntaxNode name : parts.names) {
       Symbol& variable = make(SymbolKind::Variable, name, declaration.node(), &owner);
       variable.section = section;
-      variable.type_node = type_is_reliable(declaration) ? declaration.type() : SyntaxNode();
-      variable.location_node = declaration.location();
+      variable.type_node = type;
+      variable.location_node = parts.location;
       variable.attributes = attributes;
       variable.flags |= flags | attribute_flags(attributes);
-      if (declaration.initial_value()) variable.flags |= kHasInitializer;
+      if (parts.initial_value) variable.flags |= kHasInitializer;
       add_member(owner, variable);
     }
   }
@@ -271,8 +266,9 @@ class Collector {
     if (SyntaxNode extends = type.node().first_child_of_kind("extends_clause")) {
       symbol.base_nodes = extends.children_of_kind("type_name");
     }
+    const ChildAttributes declared = attributes_of_children(type.node());
     for (const ast::VarDeclaration& field : type.fields()) {
-      add_variables(symbol, field, ast::VarSection::Unknown, 0, {});
+      add_variables(symbol, field, ast::VarSection::Unknown, 0, {}, declared);
     }
     for (SyntaxNode value : type.enum_values()) {
       Symbol& enumerator = make(SymbolKind::EnumValue, value.child_by_field("name"), value, &symbol);
@@ -412,8 +408,47 @@ std::optional<Attribute> parse_attribute_pragma(std::string_view text) {
   return attribute;
 }
 
+namespace {
+
+// Whether the text just before `node` can end a pragma or a comment: only then can attribute
+// pragmas stand before it. prev_sibling() walks from the parent's first child in tree-sitter
+// 0.20, so asking it for every declaration of a long VAR block was quadratic.
+bool may_follow_pragma(SyntaxNode node) {
+  const std::string_view text = node.source();
+  size_t at = std::min<size_t>(node.begin(), text.size());
+  while (at > 0 && (text[at - 1] == ' ' || text[at - 1] == '\t' || text[at - 1] == '\r' || text[at - 1] == '\n')) --at;
+  if (at == 0) return false;
+  const char last = text[at - 1];
+  if (last == '}' || last == ')' || last == '/') return true;  // {pragma}, (* comment *), /* comment */
+  const size_t newline = text.rfind('\n', at - 1);
+  const size_t line_begin = newline == std::string_view::npos ? 0 : newline + 1;
+  return text.substr(line_begin, at - line_begin).find("//") != std::string_view::npos;  // a // comment
+}
+
+}  // namespace
+
+ChildAttributes attributes_of_children(SyntaxNode parent) {
+  ChildAttributes out;
+  // Pragmas start with '{': without one in the node there is nothing to collect.
+  if (parent.text().find('{') == std::string_view::npos) return out;
+  std::vector<Attribute> pending;
+  walk_preorder(parent, [&](SyntaxNode child) {
+    if (child == parent) return true;
+    const std::string_view kind = child.kind();
+    if (kind == "pragma") {
+      if (auto attribute = parse_attribute_pragma(child.text())) pending.push_back(std::move(*attribute));
+    } else if (kind != "comment") {
+      if (!pending.empty()) out.emplace(child.begin(), std::move(pending));
+      pending.clear();
+    }
+    return false;
+  });
+  return out;
+}
+
 std::vector<Attribute> attributes_before(SyntaxNode node) {
   std::vector<Attribute> attributes;
+  if (!may_follow_pragma(node)) return attributes;
   for (SyntaxNode sibling = node.prev_sibling(); sibling; sibling = sibling.prev_sibling()) {
     const std::string_view kind = sibling.kind();
     if (kind == "comment") continue;

@@ -5,6 +5,7 @@
 
 #include <deque>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "checker/symbols/symbol.hpp"
@@ -32,6 +33,10 @@ FileSymbols collect_file_symbols(SourceId source, const Document& document, bool
 
 // The attribute pragmas written right before a declaration node ({attribute 'hide'}).
 std::vector<Attribute> attributes_before(SyntaxNode node);
+// The attribute pragmas before each child of `parent`, by the child's start offset, in one pass
+// (asking attributes_before() for every declaration of a long VAR block is quadratic).
+using ChildAttributes = std::unordered_map<uint32_t, std::vector<Attribute>>;
+ChildAttributes attributes_of_children(SyntaxNode parent);
 // Parses one pragma's text: {attribute 'name' := 'value'} → {name, value}; nullopt otherwise.
 std::optional<Attribute> parse_attribute_pragma(std::string_view text);
 

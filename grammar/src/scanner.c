@@ -448,7 +448,19 @@ static bool followed_by_name(TSLexer *lexer) {
  * A word: a contextual keyword where one is valid, or else, right after an IL operator on the
  * same line, the zero-width mark that an operand follows (`operand_valid`).
  */
-static bool scan_word(TSLexer *lexer, const bool *valid_symbols, bool at_line_start, bool operand_valid) {
+static bool scan_word(TSLexer *lexer, const bool *valid_symbols, bool saw_newline, bool operand_valid) {
+  /* Most words are names the internal lexer reads anyway: without a soft keyword that may
+     stand here, a header keyword's first letter or an IL operand, there is nothing to do. */
+  if (!operand_valid) {
+    bool soft_keyword_valid = false;
+    for (unsigned i = 0; i < SOFT_KEYWORD_COUNT && !soft_keyword_valid; i++) {
+      soft_keyword_valid = valid_symbols[KW_METHOD + (int)i];
+    }
+    int32_t initial = to_upper(lexer->lookahead);
+    bool header_initial = initial == 'M' || initial == 'P' || initial == 'A' || initial == 'I' ||
+                          initial == 'C' || initial == 'N';
+    if (!soft_keyword_valid && !header_initial) return false;
+  }
   if (operand_valid) lexer->mark_end(lexer);
   char word[24];
   unsigned length = read_word(lexer, word, sizeof(word));
@@ -462,7 +474,10 @@ static bool scan_word(TSLexer *lexer, const bool *valid_symbols, bool at_line_st
       lexer->result_symbol = token;
       return true;
     }
-    if (at_line_start && is_header_keyword(token)) {
+    /* At the start of a line: after a newline, or at column 0 (the word is ASCII, so its
+       length in characters is the column it ends at). get_column() re-reads the line from its
+       start, so it is asked only for the rare header keyword, not for every word. */
+    if (is_header_keyword(token) && (saw_newline || lexer->get_column(lexer) == length)) {
       lexer->mark_end(lexer);
       if (!followed_by_name(lexer)) return false;
       lexer->result_symbol = token;
@@ -529,7 +544,7 @@ bool tree_sitter_iec61131_external_scanner_scan(void *payload, TSLexer *lexer,
     return true;
   }
   if (is_word_start(c)) {
-    return scan_word(lexer, valid_symbols, saw_newline || lexer->get_column(lexer) == 0, operand_valid);
+    return scan_word(lexer, valid_symbols, saw_newline, operand_valid);
   }
   return false;
 }

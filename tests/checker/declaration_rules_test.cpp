@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "checker/check.hpp"
+#include "tests/support/project_findings.hpp"
 
 namespace rung::check {
 namespace {
@@ -17,24 +18,8 @@ namespace {
 using Found = std::vector<std::string>;
 using project::Profile;
 
-// Every diagnostic of every file as "CODE@LINE" (1-based line in its file); warnings end in "?".
 Found found(const std::vector<std::pair<std::string, std::string>>& files, Profile profile) {
-  project::ProjectConfig config;
-  config.profile = profile;
-  auto workspace = Workspace::from_texts(files, config);
-  Found result;
-  for (const auto& file : workspace->check_all(1)) {
-    const std::string* text = nullptr;
-    for (const auto& [path, content] : files) {
-      if (file.path.ends_with(path)) text = &content;
-    }
-    for (const auto& diagnostic : file.diagnostics) {
-      const auto line = text ? 1 + std::count(text->begin(), text->begin() + diagnostic.range.begin, '\n') : 0;
-      result.push_back(diagnostic.code + "@" + std::to_string(line) +
-                       (diagnostic.severity == Severity::Warning ? "?" : ""));
-    }
-  }
-  return result;
+  return testing::codes_at_lines(files, testing::config_for(profile));
 }
 
 Found found(const std::string& text, Profile profile) {

@@ -8,25 +8,15 @@
 #include <vector>
 
 #include "checker/check.hpp"
+#include "tests/support/project_findings.hpp"
 
 namespace rung::check {
 namespace {
 
 using Found = std::vector<std::string>;
 
-// Every diagnostic as "CODE@LINE" (1-based file lines), in the order rung sorts them.
 Found found(const std::string& text, project::Profile profile = project::Profile::Codesys) {
-  project::ProjectConfig config;
-  config.profile = profile;
-  auto workspace = Workspace::from_texts({{"P.il", text}}, config);
-  Found result;
-  for (const auto& file : workspace->check_all(1)) {
-    for (const auto& diagnostic : file.diagnostics) {
-      const auto line = 1 + std::count(text.begin(), text.begin() + diagnostic.range.begin, '\n');
-      result.push_back(diagnostic.code + "@" + std::to_string(line));
-    }
-  }
-  return result;
+  return testing::codes_at_lines({{"P.il", text}}, testing::config_for(profile), testing::Warnings::Unmarked);
 }
 
 std::string program(const std::string& vars, const std::string& body) {
