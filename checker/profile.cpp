@@ -49,6 +49,7 @@ Profile make_profile(project::Profile id) {
       profile.call_input_instances = false;
       profile.formal_arguments_in_order = true;
       profile.string_positions_are_uint = true;
+      profile.il_extensible_two_inputs = true;
       // `%QW1.0` is the output word starting at the second output byte (OpenPCS manual L7091).
       profile.addressing = AddressingMode::ByteOffset;
       profile.compound_types_at_addresses = false;

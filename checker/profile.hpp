@@ -48,6 +48,9 @@ struct Profile {
   // The length and position inputs of LEFT, RIGHT and MID are UINT, not any integer (OpenPCS
   // C10035, L14045-14068, although its reference pages say ANY_INT).
   bool string_positions_are_uint = false;
+  // OpenPCS: in IL an extensible function (ADD, MAX, ...) takes the current result and one
+  // operand; more inputs need LD/FBD or ST.
+  bool il_extensible_two_inputs = false;
   // A function block may call an instance it received as VAR_INPUT: not in OpenPCS (S5029).
   bool call_input_instances = true;
   // How the numbers of %I/%Q/%M addresses map to bytes: CODESYS V3 counts units of the address's

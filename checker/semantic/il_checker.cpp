@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -92,6 +93,12 @@ const Symbol* instance_block(const Type* type) {
   return kind == SymbolKind::FunctionBlock || kind == SymbolKind::Class || kind == SymbolKind::Program
              ? base->declaration
              : nullptr;
+}
+
+// ADD, MAX, MUX ...: the stubs mark the input that may repeat (rung.extensible).
+bool has_extensible_input(const Symbol& callee) {
+  return std::any_of(callee.ordered.begin(), callee.ordered.end(),
+                     [](const Symbol* member) { return member->has(kExtensible); });
 }
 
 bool has_inputs(const Symbol& callee) {
@@ -210,6 +217,7 @@ void IlChecker::check_instruction(SyntaxNode instruction, int depth, bool first_
   }
   if (depth > 0 && (op.kind == IlKind::Jump || op.kind == IlKind::Call || op.kind == IlKind::Return ||
                     (op.kind == IlKind::Load && !first_in_parentheses))) {
+    misplaced_in_parentheses_ = true;
     body_.report(
         codes::kIlNotInParentheses,
         op.kind == IlKind::Load ? fmt::format("{} inside parentheses would discard the value computed there", name)
@@ -323,10 +331,14 @@ void IlChecker::check_deferred(SyntaxNode instruction, SyntaxNode op_node, int d
   if (!close || close.is_missing()) close = instruction;
   if (left_by_) left_by_ = {};
   if (!current_.defined) {
-    body_.report(codes::kIlResultUndefined, fmt::format("the parentheses of {} compute no value", name), close.range(),
-                 "start them with an operand, e.g. AND( x, or with LD");
+    // After an E802 inside them (a CAL or JMP there) the missing value is a follow-on.
+    if (!misplaced_in_parentheses_) {
+      body_.report(codes::kIlResultUndefined, fmt::format("the parentheses of {} compute no value", name),
+                   close.range(), "start them with an operand, e.g. AND( x, or with LD");
+    }
     current_ = CurrentResult{true, ExprInfo{.type = model_.types().unknown()}};
   }
+  misplaced_in_parentheses_ = false;
   ExprInfo operand = current_.info;
   if (op.negated) operand = body_.unary_result("NOT", operand, instruction.range());
   current_ = waiting;
@@ -460,6 +472,11 @@ void IlChecker::check_function_call(SyntaxNode instruction, SyntaxNode op_node,
       ExprInfo first = current_.info;
       first.assignable = false;
       arguments.push_back(CallArgument{.node = op_node, .value = op_node, .typed = first});
+    }
+    if (model_.profile().il_extensible_two_inputs && operands.size() > 1 && has_extensible_input(*callee)) {
+      body_.report(codes::kIlOperandCount,
+                   fmt::format("in IL, {} takes the current result and one operand", upper_name(name)),
+                   operands[1].range(), "compute the rest in further instructions, e.g. MAX b then MAX c");
     }
     for (SyntaxNode operand : operands) arguments.push_back(CallArgument{.node = operand, .value = operand});
     ExprInfo result = body_.check_arguments(callee, false, arguments, instruction, 0);

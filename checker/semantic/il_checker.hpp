@@ -60,6 +60,7 @@ class IlChecker {
   CurrentResult current_;
   std::unordered_set<std::string> labels_;  // upper-case
   SyntaxNode left_by_;                      // the JMP or RET just before, while nothing else came
+  bool misplaced_in_parentheses_ = false;   // E802 reported inside the open parentheses
 };
 
 }  // namespace rung::check

@@ -237,5 +237,17 @@ TEST(IlCheck, FunctionBlockIsNoOperator) {
   EXPECT_EQ(found(program("t1 : TON; b : BOOL;", "LD b\nt1\nCU t1\n")), (Found{"E307@6", "E005@7"}));
 }
 
+TEST(IlCheck, ExtensibleFunctionsTakeOneOperandInOpenPcsIl) {
+  // OpenPCS: MAX b, c is an error in IL (the current result and one operand); CODESYS accepts it.
+  const std::string text = program("a : INT; b : INT; c : INT;", "LD a\nMAX b, c\nST a\nLD a\nMAX b\nST a\n");
+  EXPECT_EQ(found(text, project::Profile::Openpcs), Found{"E803@6"});
+  EXPECT_EQ(found(text), Found{});
+}
+
+TEST(IlCheck, MisplacedCallInParenthesesIsReportedOnce) {
+  // The CAL inside the parentheses is the error; the value it leaves undefined is a follow-on.
+  EXPECT_EQ(found(program("a : INT; b : INT; t : CTU;", "LD a\nADD( b\nCAL t\n)\nST a\n")), Found{"E802@7"});
+}
+
 }  // namespace
 }  // namespace rung::check
