@@ -81,12 +81,10 @@ void add_files(ProjectModel& model, const std::vector<fs::path>& files, unsigned
           if (load_errors) load_errors->push_back(loaded.path.string() + ": " + loaded.error);
           return;
         }
-        // An unreadable file earlier in the list shifts the ids: collect again with the real one.
-        if (model.source_count() != first_id + loaded.index) {
-          model.add_source(std::move(loaded.document), library_name);
-        } else {
-          model.add_source(std::move(loaded.document), library_name, std::move(symbols[loaded.index]));
-        }
+        // An unreadable file earlier in the list shifts the ids of the files after it.
+        FileSymbols& collected = symbols[loaded.index];
+        renumber(collected, static_cast<SourceId>(model.source_count()));
+        model.add_source(std::move(loaded.document), library_name, std::move(collected));
       },
       collect);
 }

@@ -470,4 +470,9 @@ FileSymbols collect_file_symbols(SourceId source, const Document& document, bool
   return out;
 }
 
+void renumber(FileSymbols& symbols, SourceId source) {
+  symbols.source = source;
+  for (Symbol& symbol : symbols.storage) symbol.source = source;
+}
+
 }  // namespace rung::check

@@ -30,6 +30,8 @@ struct FileSymbols {
 // `gvl_name` names the global variable lists of a plain text file (CODESYS exports a GVL as
 // <name>.st); container files name their lists themselves.
 FileSymbols collect_file_symbols(SourceId source, const Document& document, bool library, std::string_view gvl_name);
+// Gives symbols collected under one id another (a file loaded in parallel whose id shifted).
+void renumber(FileSymbols& symbols, SourceId source);
 
 // The attribute pragmas written right before a declaration node ({attribute 'hide'}).
 std::vector<Attribute> attributes_before(SyntaxNode node);

@@ -1,10 +1,12 @@
 // The semantic checker end to end: texts in, diagnostics out (codes and positions).
+#include "checker/check.hpp"
+
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
-
-#include "checker/check.hpp"
 
 namespace rung::check {
 namespace {
@@ -36,7 +38,8 @@ TEST(Check, CleanProgramHasNoDiagnostics) {
 TEST(Check, IntegerLiteralIntoBoolIsC0032) {
   // 000a L4695-4711: bReady := 211 -> "Cannot convert type 'USINT' to type 'BOOL'"
   project::ProjectConfig config;
-  auto workspace = Workspace::from_texts({{"P.st", "PROGRAM P\nVAR bReady : BOOL; END_VAR\nbReady := 211;\nEND_PROGRAM\n"}}, config);
+  auto workspace =
+      Workspace::from_texts({{"P.st", "PROGRAM P\nVAR bReady : BOOL; END_VAR\nbReady := 211;\nEND_PROGRAM\n"}}, config);
   auto results = workspace->check_all(1);
   ASSERT_EQ(results.size(), 1u);
   ASSERT_EQ(results[0].diagnostics.size(), 1u);
@@ -51,7 +54,8 @@ TEST(Check, SubrangeConstantOutOfRange) {
 
 TEST(Check, UndeclaredNameSuggestsTheCloseOne) {
   project::ProjectConfig config;
-  auto workspace = Workspace::from_texts({{"P.st", "PROGRAM P\nVAR bStart : BOOL; END_VAR\nbStrat := TRUE;\nEND_PROGRAM\n"}}, config);
+  auto workspace = Workspace::from_texts(
+      {{"P.st", "PROGRAM P\nVAR bStart : BOOL; END_VAR\nbStrat := TRUE;\nEND_PROGRAM\n"}}, config);
   auto results = workspace->check_all(1);
   ASSERT_EQ(results[0].diagnostics.size(), 1u);
   EXPECT_EQ(results[0].diagnostics[0].code, "E001");
@@ -76,7 +80,8 @@ TEST(Check, StatementRules) {
             Codes{"E405"});
   EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\nIF i THEN i := 1; END_IF\nEND_PROGRAM\n"), Codes{"E103"});
   EXPECT_EQ(codes_of("PROGRAM P\nVAR CONSTANT c : INT := 1; END_VAR\nc := 2;\nEND_PROGRAM\n"), Codes{"E401"});
-  EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\nFOR i := 1 TO 3 DO i := 2; END_FOR\nEND_PROGRAM\n"), Codes{"E407"});
+  EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\nFOR i := 1 TO 3 DO i := 2; END_FOR\nEND_PROGRAM\n"),
+            Codes{"E407"});
   EXPECT_EQ(codes_of("PROGRAM P\nVAR i : INT; END_VAR\ni := i / 0;\nEND_PROGRAM\n"), Codes{"E702"});
   EXPECT_EQ(codes_of("PROGRAM P\nVAR a : ARRAY[1..3] OF INT; END_VAR\na[4] := 1;\nEND_PROGRAM\n"), Codes{"E107"});
   EXPECT_EQ(codes_of("PROGRAM P\nVAR t : TON; END_VAR\nt.Q := TRUE;\nEND_PROGRAM\n"), Codes{"E402"});
@@ -140,6 +145,33 @@ TEST(Check, ExplicitDecimalLiteral) {
   // is out of range for an INT like the plain literal.
   EXPECT_EQ(codes_of("PROGRAM P\nVAR u : UINT := 10#30000; i : INT; END_VAR\ni := 10#40000;\nEND_PROGRAM\n"),
             (Codes{"E102"}));
+}
+
+TEST(Check, UnreadableFileInTheMiddleKeepsLaterFilesApart) {
+  // Files are parsed and their symbols collected on several threads under the ids they will get;
+  // a file that cannot be read shifts the ids of every file after it.
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() / "rung_check_unreadable";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  std::ofstream(folder / "a.st") << "FUNCTION_BLOCK FB_A\nVAR_INPUT x : INT; END_VAR\nEND_FUNCTION_BLOCK\n";
+  std::ofstream(folder / "c.st") << "PROGRAM P\nVAR f : FB_A; END_VAR\nf(x := 1);\nf.y := 2;\nEND_PROGRAM\n"
+                                    "FUNCTION F_Loop : INT\nF_Loop := F_Loop();\nEND_FUNCTION\n";
+  project::ProjectConfig config;
+  LoadOptions options;
+  options.threads = 2;
+  auto workspace = Workspace::load_files({folder / "a.st", folder / "missing.st", folder / "c.st"}, config, options);
+  ASSERT_EQ(workspace->load_errors.size(), 1u);
+  std::vector<std::string> found;
+  for (const auto& file : workspace->check_all(1)) {
+    for (const auto& diagnostic : file.diagnostics) {
+      found.push_back(fs::path(file.path).filename().string() + ":" + diagnostic.code);
+    }
+  }
+  // f.y: FB_A has no member y (FB_A itself resolves); the recursion is reported in c.st, the file
+  // its symbols say they belong to.
+  EXPECT_EQ(found, (Codes{"c.st:E005", "c.st:E209"}));
+  fs::remove_all(folder);
 }
 
 }  // namespace
