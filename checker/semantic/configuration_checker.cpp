@@ -226,6 +226,16 @@ class PathResolver {
     return true;
   }
 
+  // A path that starts at a global variable (it takes `used` segments to name it).
+  static bool start_at_global(const Symbol* member, size_t used, ResolvedPath& result, size_t& next,
+                              const Symbol*& variable) {
+    result.root = "G";
+    result.chain.push_back(member);
+    variable = member;
+    next = used;
+    return true;
+  }
+
   // Reads the first segments: the root of the instance tree. False when the path ends there.
   bool start(const std::vector<SyntaxNode>& segments, SyntaxNode configuration, ResolvedPath& result, size_t& next,
              const Symbol*& container, const Symbol*& variable) const {
@@ -241,11 +251,7 @@ class PathResolver {
         return start_at_instance(*found, result, container);
       }
       if (const Symbol* member = model_.find_global_variable(segments[1].text())) {  // the resource's VAR_GLOBAL
-        result.root = "G";
-        result.chain.push_back(member);
-        variable = member;
-        next = 2;
-        return true;
+        return start_at_global(member, 2, result, next, variable);
       }
       std::vector<std::string_view> names;
       for (const ProgramInstance& candidate : instances_) {
@@ -270,20 +276,10 @@ class PathResolver {
     const Symbol* global = model_.find_global(first);
     if (global && global->kind == SymbolKind::GlobalList && segments.size() > 1) {
       if (const Symbol* member = global->own_member(segments[1].text())) {
-        result.root = "G";
-        result.chain.push_back(member);
-        variable = member;
-        next = 2;
-        return true;
+        return start_at_global(member, 2, result, next, variable);
       }
     }
-    if (const Symbol* member = model_.find_global_variable(first)) {
-      result.root = "G";
-      result.chain.push_back(member);
-      variable = member;
-      next = 1;
-      return true;
-    }
+    if (const Symbol* member = model_.find_global_variable(first)) return start_at_global(member, 1, result, next, variable);
     std::vector<std::string_view> names;
     for (const ProgramInstance& candidate : instances_)
       names.push_back(candidate.resource.empty() ? candidate.name : candidate.resource);

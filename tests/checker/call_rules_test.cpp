@@ -24,11 +24,7 @@ Found found(const std::string& text, Profile profile) {
 
 // The messages of the diagnostics with this code.
 std::vector<std::string> messages(const std::string& text, Profile profile, std::string_view code) {
-  std::vector<std::string> result;
-  for (auto& finding : testing::project_findings({{"P.st", text}}, testing::config_for(profile))) {
-    if (finding.at.starts_with(std::string(code) + "@")) result.push_back(std::move(finding.message));
-  }
-  return result;
+  return testing::messages_with_code({{"P.st", text}}, testing::config_for(profile), code);
 }
 
 const std::string kAdd2 =

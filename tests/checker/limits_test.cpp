@@ -25,15 +25,8 @@ Found found(const std::string& text, Profile profile, std::string addressing = {
 
 // The message of the first diagnostic with `code`, or "" when there is none.
 std::string message_of(const std::string& text, Profile profile, std::string_view code) {
-  project::ProjectConfig config;
-  config.profile = profile;
-  auto workspace = Workspace::from_texts({{"P.st", text}}, config);
-  for (const auto& file : workspace->check_all(1)) {
-    for (const auto& diagnostic : file.diagnostics) {
-      if (diagnostic.code == code) return diagnostic.message;
-    }
-  }
-  return {};
+  const auto messages = testing::messages_with_code({{"P.st", text}}, testing::config_for(profile), code);
+  return messages.empty() ? std::string() : messages.front();
 }
 
 // A PROGRAM with `declarations` in its VAR block and `body` as its statements.

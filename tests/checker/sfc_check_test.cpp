@@ -27,15 +27,8 @@ std::string chart(const std::string& body, const std::string& vars = "") {
 // The first message of a diagnostic with this code.
 std::string message_of(const std::string& text, std::string_view code,
                        project::Profile profile = project::Profile::Iec) {
-  project::ProjectConfig config;
-  config.profile = profile;
-  auto workspace = Workspace::from_texts({{"P.st", text}}, config);
-  for (const auto& file : workspace->check_all(1)) {
-    for (const auto& diagnostic : file.diagnostics) {
-      if (diagnostic.code == code) return diagnostic.message;
-    }
-  }
-  return {};
+  const auto messages = testing::messages_with_code({{"P.st", text}}, testing::config_for(profile), code);
+  return messages.empty() ? std::string() : messages.front();
 }
 
 // --- Charts that are fine -------------------------------------------------------------------

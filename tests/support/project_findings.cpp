@@ -29,6 +29,16 @@ std::vector<std::string> codes_at_lines(const Files& files, const project::Proje
   return result;
 }
 
+std::vector<std::string> messages_with_code(const Files& files, const project::ProjectConfig& config,
+                                            std::string_view code) {
+  std::vector<std::string> result;
+  const std::string prefix = std::string(code) + "@";
+  for (Finding& finding : project_findings(files, config)) {
+    if (finding.at.starts_with(prefix)) result.push_back(std::move(finding.message));
+  }
+  return result;
+}
+
 project::ProjectConfig config_for(project::Profile profile) {
   project::ProjectConfig config;
   config.profile = profile;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -27,6 +28,10 @@ std::vector<Finding> project_findings(const Files& files, const project::Project
 // Only the "CODE@LINE" of each finding.
 std::vector<std::string> codes_at_lines(const Files& files, const project::ProjectConfig& config,
                                         Warnings warnings = Warnings::Marked);
+
+// The messages of the findings with this code, in order.
+std::vector<std::string> messages_with_code(const Files& files, const project::ProjectConfig& config,
+                                            std::string_view code);
 
 // A configuration with just the profile set.
 project::ProjectConfig config_for(project::Profile profile);
