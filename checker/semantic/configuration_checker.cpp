@@ -279,7 +279,9 @@ class PathResolver {
         return start_at_global(member, 2, result, next, variable);
       }
     }
-    if (const Symbol* member = model_.find_global_variable(first)) return start_at_global(member, 1, result, next, variable);
+    if (const Symbol* member = model_.find_global_variable(first)) {
+      return start_at_global(member, 1, result, next, variable);
+    }
     std::vector<std::string_view> names;
     for (const ProgramInstance& candidate : instances_)
       names.push_back(candidate.resource.empty() ? candidate.name : candidate.resource);
