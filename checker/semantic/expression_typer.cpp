@@ -66,6 +66,17 @@ bool report_ambiguous_enum_value(BodyChecker& checker, const ProjectModel& model
   return true;
 }
 
+// Whether `node` stands in an IL instruction (asked only for the rare IL-only forms: parent() walks
+// down from the root in tree-sitter 0.20).
+bool inside_il(SyntaxNode node) {
+  for (SyntaxNode up = node.parent(); up; up = up.parent()) {
+    const std::string_view kind = up.kind();
+    if (kind == "il_instruction" || kind == "il_body") return true;
+    if (kind == "statement_list") return false;
+  }
+  return false;
+}
+
 // Values that can never have a member after '.': elementary values, strings, subranges, arrays
 // (an enumeration's values are reached through its type name, not through a variable).
 bool has_no_members(const Type* type) {
@@ -106,7 +117,15 @@ ExprInfo BodyChecker::type_expression(SyntaxNode expression, int depth) {
       return ExprInfo{.type = types_.unknown(), .assignable = true};
     default:
       if (expression.kind() == "global_reference") return type_identifier(expression);
-      if (expression.kind() == "il_expression") return IlChecker(*this, model_, pou_).value_of(expression);
+      if (expression.kind() == "il_expression") {
+        // `(a ADD b)` is an IL argument form (CAL fb(P := (a ADD b))); the grammar also lets it
+        // through in ST calls, where it is not the language.
+        if (!inside_il(expression)) {
+          report(codes::kSyntaxError, "an IL expression in Structured Text", expression.range(),
+                 "write the ST expression, e.g. (a + b)");
+        }
+        return IlChecker(*this, model_, pou_).value_of(expression);
+      }
       // Initializers, assignment expressions: their parts are still checked for names.
       for (uint32_t i = 0; i < expression.named_child_count(); ++i) {
         SyntaxNode child = expression.named_child(i);

@@ -249,5 +249,11 @@ TEST(IlCheck, MisplacedCallInParenthesesIsReportedOnce) {
   EXPECT_EQ(found(program("a : INT; b : INT; t : CTU;", "LD a\nADD( b\nCAL t\n)\nST a\n")), Found{"E802@7"});
 }
 
+TEST(IlCheck, IlExpressionIsNoStSyntax) {
+  // (a ADD b) is an IL argument form; in an ST call it is a syntax error, reported once.
+  EXPECT_EQ(found("PROGRAM P\nVAR a, b, c : INT; END_VAR\nc := MAX(IN1 := (a ADD b), IN2 := 1);\nEND_PROGRAM\n"),
+            Found{"S001@3"});
+}
+
 }  // namespace
 }  // namespace rung::check
