@@ -58,12 +58,6 @@ void apply_overrides(std::vector<Diagnostic>& diagnostics, const project::Projec
 }
 
 // Every POU and member of a file, so each body is checked once.
-void collect_pous(const Symbol* symbol, std::vector<const Symbol*>& out) {
-  if (!is_pou_kind(symbol->kind)) return;
-  out.push_back(symbol);
-  for (const Symbol* member : symbol->ordered) collect_pous(member, out);
-}
-
 // Loads `files` on `threads` threads and adds them to `model` in order. Each file's symbols are
 // collected on the thread that parsed it: the ids the model will give are known in advance.
 void add_files(ProjectModel& model, const std::vector<fs::path>& files, unsigned threads,
@@ -143,11 +137,7 @@ FileDiagnostics Workspace::check_source(SourceId id) const {
   result.path = source.document->path();
   std::vector<Diagnostic> semantic = source.symbols.diagnostics;
   semantic.insert(semantic.end(), source.link_diagnostics.begin(), source.link_diagnostics.end());
-  for (const Symbol* top : source.symbols.top_level) {
-    std::vector<const Symbol*> pous;
-    collect_pous(top, pous);
-    for (const Symbol* pou : pous) BodyChecker(*model_, *pou, semantic).check();
-  }
+  for (const Symbol* pou : pous_of(source.symbols)) BodyChecker(*model_, *pou, semantic).check();
   check_declarations(*model_, id, semantic);
   check_recursion(*model_, id, semantic);
   check_pragmas(*model_, id, semantic);

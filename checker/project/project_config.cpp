@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "checker/project/config_sections.hpp"
 #include "parser/diagnostic_codes.hpp"
 #include "parser/file_walk.hpp"
 #include "parser/keywords.hpp"
@@ -20,7 +21,7 @@ namespace {
 using keywords::upper;
 
 // Collects diagnostics with positions taken from toml++'s 1-based line/column.
-class ConfigReader {
+class ConfigReader final : public ConfigReport {
  public:
   ConfigReader(LoadedConfig& out) : out_(out), lines_(out.text) {}
 
@@ -43,14 +44,18 @@ class ConfigReader {
         read_diagnostics(node);
       } else if (k == "target") {
         read_target(node);
+      } else if (k == "format") {
+        read_format_section(node, out_.config.format, *this);
+      } else if (k == "lint") {
+        read_lint_section(node, out_.config.lint, *this);
       } else {
-        unknown(key, "top-level table", "project, defines, diagnostics, target");
+        unknown(key, "top-level table", "project, defines, diagnostics, target, format, lint");
       }
     }
   }
 
  private:
-  uint32_t offset_of(const toml::source_position& p) const {
+  uint32_t offset_of(const toml::source_position& p) const override {
     if (!p) return 0;
     return lines_.offset_of_char(p.line - 1, p.column - 1);
   }
@@ -67,12 +72,15 @@ class ConfigReader {
     out_.diagnostics.push_back(std::move(d));
   }
 
+  void unknown_key(const toml::key& key, std::string_view where, std::string_view known) override {
+    unknown(key, where, known);
+  }
   void unknown(const toml::key& key, std::string_view where, std::string_view known) {
     add(codes::kConfigUnknownKey, Severity::Warning, key.source().begin,
         fmt::format("unknown key '{}' in {}", key.str(), where), fmt::format("known keys: {}", known));
   }
 
-  void bad_value(const toml::node& node, std::string message, std::string help = {}) {
+  void bad_value(const toml::node& node, std::string message, std::string help = {}) override {
     add(codes::kConfigBadValue, Severity::Error, node.source().begin, std::move(message), std::move(help));
   }
 

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "checker/project/format_settings.hpp"
+#include "checker/project/lint_settings.hpp"
 #include "parser/diagnostic.hpp"
 
 namespace rung::project {
@@ -37,6 +39,8 @@ struct ProjectConfig {
   // 2..3, bits 0..7), "word" (word.bit, bits 0..15) or "byte-offset" (%MW1 = bytes 1..2);
   // empty: the profile's.
   std::string addressing;
+  FormatSettings format;  // [format]: rung fmt
+  LintSettings lint;      // [lint]: rung lint
 };
 
 struct LoadedConfig {

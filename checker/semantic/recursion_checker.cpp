@@ -109,18 +109,11 @@ class EdgeCollector {
   std::vector<CallEdge>& out_;
 };
 
-void collect_pous(const Symbol* symbol, std::vector<const Symbol*>& out) {
-  if (!is_pou_kind(symbol->kind)) return;
-  out.push_back(symbol);
-  for (const Symbol* member : symbol->ordered) collect_pous(member, out);
-}
-
 std::vector<CallEdge> edges_of_source(const ProjectModel& model, SourceId id) {
   std::vector<CallEdge> edges;
   const Source& source = model.source(id);
   if (source.library) return edges;
-  std::vector<const Symbol*> pous;
-  for (const Symbol* top : source.symbols.top_level) collect_pous(top, pous);
+  const std::vector<const Symbol*> pous = pous_of(source.symbols);
   EdgeCollector collector(model, edges);
   for (const Symbol* pou : pous) collector.add_pou(pou);
   return edges;

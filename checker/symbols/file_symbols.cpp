@@ -475,4 +475,18 @@ void renumber(FileSymbols& symbols, SourceId source) {
   for (Symbol& symbol : symbols.storage) symbol.source = source;
 }
 
+namespace {
+void collect_pous(const Symbol* symbol, std::vector<const Symbol*>& out) {
+  if (!is_pou_kind(symbol->kind)) return;
+  out.push_back(symbol);
+  for (const Symbol* member : symbol->ordered) collect_pous(member, out);
+}
+}  // namespace
+
+std::vector<const Symbol*> pous_of(const FileSymbols& symbols) {
+  std::vector<const Symbol*> pous;
+  for (const Symbol* top : symbols.top_level) collect_pous(top, pous);
+  return pous;
+}
+
 }  // namespace rung::check

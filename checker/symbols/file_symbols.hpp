@@ -30,6 +30,9 @@ struct FileSymbols {
 // `gvl_name` names the global variable lists of a plain text file (CODESYS exports a GVL as
 // <name>.st); container files name their lists themselves.
 FileSymbols collect_file_symbols(SourceId source, const Document& document, bool library, std::string_view gvl_name);
+// Every POU of the file in text order, members (methods, actions, properties...) right after their
+// owner: what the body checks and the linter visit.
+std::vector<const Symbol*> pous_of(const FileSymbols& symbols);
 // Gives symbols collected under one id another (a file loaded in parallel whose id shifted).
 void renumber(FileSymbols& symbols, SourceId source);
 

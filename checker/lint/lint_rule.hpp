@@ -1,0 +1,90 @@
+// One lint rule: its registry facts (code, name, default severity) and the function that looks
+// for it in one file. Rules are grouped in files by concern (rules_*.cpp); each group adds its
+// rules to the registry (rule_registry.cpp). A rule reads the linked ProjectModel and the syntax
+// tree, never files: the same rules serve `rung lint`, the language server and the tests.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "checker/project/lint_settings.hpp"
+#include "checker/project_model.hpp"
+#include "parser/diagnostic.hpp"
+
+namespace rung::lint {
+
+// Replace `range` of the TREE text by `replacement`.
+struct TextEdit {
+  TextRange range;
+  std::string replacement;
+};
+
+// An automatic fix: only offered where it is safe (it cannot change what the program does, or it
+// does exactly what the message says, e.g. removing `x := x;`). Edits never overlap.
+struct Fix {
+  std::string description;  // "remove the empty statement"
+  std::vector<TextEdit> edits;
+};
+
+// A finding with its fix. Ranges in tree coordinates inside rules; lint_file() maps them to the
+// file (container files: the container's own offsets).
+struct Finding {
+  Diagnostic diagnostic;
+  std::optional<Fix> fix;
+};
+
+class LintContext;
+using RuleCheck = void (*)(LintContext& context);
+
+struct Rule {
+  std::string_view code;  // "L030": also a row of the diagnostic registry (parser/diagnostic_codes)
+  std::string_view name;  // "case-without-else": the same as the registry's title
+  bool enabled_by_default = true;
+  bool has_fix = false;  // the rule offers a Fix (tests check that fixed.st exists)
+  RuleCheck check = nullptr;
+};
+
+// Everything a rule may look at while it checks one file, and where it reports.
+class LintContext {
+ public:
+  LintContext(const check::ProjectModel& model, check::SourceId source, const project::LintSettings& settings,
+              std::vector<Finding>& out)
+      : model_(model), source_(source), settings_(settings), out_(out) {}
+
+  const check::ProjectModel& model() const { return model_; }
+  check::SourceId source_id() const { return source_; }
+  const check::Source& source() const { return model_.source(source_); }
+  // The file's syntax tree root and text (tree coordinates); the root is null when the file
+  // was not parsed.
+  SyntaxNode root() const;
+  std::string_view text() const;
+  // The file's POUs (members after their owner), as the body checks see them.
+  const std::vector<const check::Symbol*>& pous() const;
+
+  // [lint.thresholds] value, or `fallback` when rung.toml does not set it.
+  int64_t threshold(std::string_view key, int64_t fallback) const;
+  // [lint.naming] pattern, or `fallback`.
+  std::string_view naming(std::string_view key, std::string_view fallback) const;
+  const project::LintSettings& settings() const { return settings_; }
+
+  // Reports a finding of `code` (its registry severity; rung.toml overrides come later).
+  void report(std::string_view code, std::string message, TextRange range, std::string help = {},
+              std::optional<Fix> fix = std::nullopt);
+
+ private:
+  const check::ProjectModel& model_;
+  check::SourceId source_;
+  const project::LintSettings& settings_;
+  std::vector<Finding>& out_;
+  mutable std::optional<std::vector<const check::Symbol*>> pous_;
+};
+
+// Every rule, ordered by code.
+std::span<const Rule> all_rules();
+// By code ("L030") or name ("case-without-else"), case-insensitively.
+const Rule* find_rule(std::string_view code_or_name);
+
+}  // namespace rung::lint
