@@ -6,7 +6,9 @@
 
 #include "cli/check_command.hpp"
 #include "cli/explain_command.hpp"
+#include "cli/fmt_command.hpp"
 #include "cli/init_command.hpp"
+#include "cli/lint_command.hpp"
 #include "cli/parse_command.hpp"
 
 namespace {
@@ -53,8 +55,8 @@ int run(int argc, char** argv) {
   rung::cli::CheckCommandOptions check_options;
   std::string check_format = "human";
   std::string check_profile;
-  CLI::App* check = app.add_subcommand(
-      "check", "Check a project: syntax, names, types, calls and declarations across all its files");
+  CLI::App* check =
+      app.add_subcommand("check", "Check a project: syntax, names, types, calls and declarations across all its files");
   check->add_option("paths", check_options.paths,
                     "Files or folders to report on (default: the current folder); the whole project is read");
   check->add_option("--format", check_format, "Output format (sarif: SARIF 2.1.0 for code scanning)")
@@ -64,6 +66,46 @@ int run(int argc, char** argv) {
   check->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
   check->add_flag("-q,--quiet", check_options.quiet, "Do not print the closing summary line");
   check->add_option("-j,--jobs", check_options.threads, "Threads (default: one per core)");
+
+  rung::cli::FmtCommandOptions fmt_options;
+  CLI::App* fmt_command = app.add_subcommand(
+      "fmt", "Format source files in place with the project's [format] settings (or check, or show a diff)");
+  fmt_command->add_option("paths", fmt_options.paths, "Files or folders (default: the project of the current folder)");
+  fmt_command->add_flag("--check", fmt_options.check,
+                        "Write nothing; list the files that would change (exit 1 if any)");
+  fmt_command->add_flag("--diff", fmt_options.diff,
+                        "Write nothing; print the changes as unified diffs (exit 1 if any)");
+  fmt_command->add_flag("--stdin", fmt_options.stdin_mode, "Format standard input to standard output");
+  fmt_command->add_option("--stdin-filename", fmt_options.stdin_filename,
+                          "With --stdin: the file's name (its kind and its project's rung.toml)");
+  fmt_command->add_option("--color", color_text, "When to use colours")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  fmt_command->add_flag("-q,--quiet", fmt_options.quiet, "Do not print the closing summary line");
+  fmt_command->add_option("-j,--jobs", fmt_options.threads, "Threads (default: one per core)");
+
+  rung::cli::LintCommandOptions lint_options;
+  std::string lint_format = "human";
+  std::string lint_profile;
+  std::string lint_baseline;
+  CLI::App* lint = app.add_subcommand(
+      "lint", "Lint a project: naming, structure and likely mistakes in legal code (rung.toml [lint])");
+  lint->add_option("paths", lint_options.paths,
+                   "Files or folders to report on (default: the current folder); the whole project is read");
+  lint->add_flag("--fix", lint_options.fix, "Apply the fixes of the reported findings to the files");
+  lint->add_option("--format", lint_format, "Output format (sarif: SARIF 2.1.0 for code scanning)")
+      ->check(CLI::IsMember({"human", "json", "sarif"}));
+  lint->add_option("--profile", lint_profile, "Semantics profile, overrides rung.toml")
+      ->check(CLI::IsMember({"codesys", "iec", "twincat", "openpcs"}));
+  CLI::Option* write_baseline =
+      lint->add_option("--write-baseline", lint_baseline,
+                       "Record the current findings in the baseline file (default: rung.toml [lint] baseline, "
+                       "else lint-baseline.json); use --write-baseline=FILE for another file")
+          ->expected(0, 1);
+  lint->add_flag("--no-baseline", lint_options.no_baseline, "Also report the findings the baseline lists");
+  lint->add_flag("--list-rules", lint_options.list_rules, "List the rules and how rung.toml sets them");
+  lint->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
+  lint->add_flag("-q,--quiet", lint_options.quiet, "Do not print the closing summary lines");
+  lint->add_option("-j,--jobs", lint_options.threads, "Threads (default: one per core)");
 
   std::string explain_code;
   CLI::App* explain =
@@ -116,7 +158,20 @@ int run(int argc, char** argv) {
 
   if (*init) return rung::cli::run_init_command(init_dir, init_force, stdout, stderr);
   if (*explain) return rung::cli::run_explain_command(explain_code, stdout, stderr);
+  if (*fmt_command) {
+    fmt_options.color = color;
+    return rung::cli::run_fmt_command(fmt_options, stdin, stdout, stderr);
+  }
 
+  if (*lint) {
+    lint_options.color = color;
+    lint_options.format = lint_format == "json"    ? rung::cli::CheckFormat::Json
+                          : lint_format == "sarif" ? rung::cli::CheckFormat::Sarif
+                                                   : rung::cli::CheckFormat::Human;
+    if (!lint_profile.empty()) lint_options.profile = rung::project::parse_profile(lint_profile);
+    if (write_baseline->count() > 0) lint_options.write_baseline = lint_baseline;
+    return rung::cli::run_lint_command(lint_options, stdout, stderr);
+  }
   if (*check) {
     check_options.color = color;
     check_options.format = check_format == "json"    ? rung::cli::CheckFormat::Json

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "checker/lint/suppression.hpp"
+#include "checker/symbols/names.hpp"
 #include "parser/diagnostic_codes.hpp"
 #include "parser/parallel_for.hpp"
 
@@ -14,18 +16,29 @@ std::optional<Severity> rule_severity(const Rule& rule, const project::LintSetti
   // A setting by code and one by name may both be present; the last in key order wins, which is
   // deterministic (the map is sorted).
   for (const auto& [key, value] : settings.rules) {
-    if (find_rule(key) != &rule) continue;
-    if (value == "off") level = std::nullopt;
-    else if (value == "on") level = fallback;
-    else if (value == "error") level = Severity::Error;
-    else if (value == "warning") level = Severity::Warning;
-    else if (value == "info") level = Severity::Info;
-    else if (value == "hint") level = Severity::Hint;
+    // Codes and names are unique, so this is find_rule(key) == &rule without a registry scan
+    // (this runs for every rule of every file).
+    if (!check::names_equal(key, rule.code) && !check::names_equal(key, rule.name)) continue;
+    if (value == "off")
+      level = std::nullopt;
+    else if (value == "on")
+      level = fallback;
+    else if (value == "error")
+      level = Severity::Error;
+    else if (value == "warning")
+      level = Severity::Warning;
+    else if (value == "info")
+      level = Severity::Info;
+    else if (value == "hint")
+      level = Severity::Hint;
   }
   return level;
 }
 
-FileFindings lint_source(const check::Workspace& workspace, check::SourceId id, const project::LintSettings& settings) {
+FileFindings lint_source(const check::Workspace& workspace, check::SourceId id, const project::LintSettings& settings,
+                         AnalysisCache* cache) {
+  AnalysisCache own_cache;
+  AnalysisCache& shared = cache ? *cache : own_cache;
   const check::ProjectModel& model = workspace.model();
   const check::Source& source = model.source(id);
   FileFindings result;
@@ -36,12 +49,18 @@ FileFindings lint_source(const check::Workspace& workspace, check::SourceId id, 
     const std::optional<Severity> severity = rule_severity(rule, settings);
     if (!severity || !rule.check) continue;
     std::vector<Finding> found;
-    LintContext context(model, id, settings, found);
+    LintContext context(model, id, settings, found, &shared);
     rule.check(context);
     for (Finding& finding : found) {
       finding.diagnostic.severity = *severity;
       result.findings.push_back(std::move(finding));
     }
+  }
+  // Suppression comments speak in tree coordinates, like the rules.
+  const std::vector<Suppression> suppressions = read_suppressions(source.document->tree()->root());
+  if (!suppressions.empty()) {
+    std::erase_if(result.findings,
+                  [&](const Finding& finding) { return is_suppressed(suppressions, finding.diagnostic); });
   }
   // Rules report in tree coordinates; a container file's user sees the container's offsets.
   const Document& document = *source.document;
@@ -58,7 +77,8 @@ FileFindings lint_source(const check::Workspace& workspace, check::SourceId id, 
     }
   }
   std::stable_sort(result.findings.begin(), result.findings.end(), [](const Finding& a, const Finding& b) {
-    if (a.diagnostic.range.begin != b.diagnostic.range.begin) return a.diagnostic.range.begin < b.diagnostic.range.begin;
+    if (a.diagnostic.range.begin != b.diagnostic.range.begin)
+      return a.diagnostic.range.begin < b.diagnostic.range.begin;
     return a.diagnostic.code < b.diagnostic.code;
   });
   return result;
@@ -70,8 +90,14 @@ std::vector<FileFindings> lint_all(const check::Workspace& workspace, const proj
   for (check::SourceId id = 0; id < workspace.model().source_count(); ++id) {
     if (!workspace.model().source(id).library) ids.push_back(id);
   }
+  return lint_sources(workspace, ids, settings, threads);
+}
+
+std::vector<FileFindings> lint_sources(const check::Workspace& workspace, const std::vector<check::SourceId>& ids,
+                                       const project::LintSettings& settings, unsigned threads) {
   std::vector<FileFindings> results(ids.size());
-  parallel_for(ids.size(), threads, [&](size_t i) { results[i] = lint_source(workspace, ids[i], settings); });
+  AnalysisCache cache;  // one project-wide analysis serves every file
+  parallel_for(ids.size(), threads, [&](size_t i) { results[i] = lint_source(workspace, ids[i], settings, &cache); });
   return results;
 }
 

@@ -21,11 +21,15 @@ struct FileFindings {
 std::optional<Severity> rule_severity(const Rule& rule, const project::LintSettings& settings);
 
 // Findings of one project file: every enabled rule, rung.toml severities, suppression comments.
+// `cache` shares analyses across files (lint_all passes one); without it the call has its own.
 FileFindings lint_source(const check::Workspace& workspace, check::SourceId source,
-                         const project::LintSettings& settings);
+                         const project::LintSettings& settings, AnalysisCache* cache = nullptr);
 // Every project file (not the stub libraries), in the workspace's file order.
 std::vector<FileFindings> lint_all(const check::Workspace& workspace, const project::LintSettings& settings,
                                    unsigned threads = 0);
+// The given files (e.g. the ones a command names), in the order given.
+std::vector<FileFindings> lint_sources(const check::Workspace& workspace, const std::vector<check::SourceId>& ids,
+                                       const project::LintSettings& settings, unsigned threads = 0);
 
 // `text` with the edits applied (ranges in `text`; edits that overlap an earlier one are skipped
 // and counted in *skipped).

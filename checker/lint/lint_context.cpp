@@ -18,6 +18,12 @@ const std::vector<const check::Symbol*>& LintContext::pous() const {
   return *pous_;
 }
 
+AnalysisCache& LintContext::cache() const {
+  if (cache_) return *cache_;
+  if (!own_cache_) own_cache_ = std::make_unique<AnalysisCache>();
+  return *own_cache_;
+}
+
 int64_t LintContext::threshold(std::string_view key, int64_t fallback) const {
   auto found = settings_.thresholds.find(std::string(key));
   return found == settings_.thresholds.end() ? fallback : found->second;
@@ -31,6 +37,12 @@ std::string_view LintContext::naming(std::string_view key, std::string_view fall
 void LintContext::report(std::string_view code, std::string message, TextRange range, std::string help,
                          std::optional<Fix> fix) {
   out_.push_back(Finding{make_diagnostic(code, std::move(message), range, std::move(help)), std::move(fix)});
+}
+
+void LintContext::report(std::string_view code, std::string message, TextRange range, std::string help,
+                         std::vector<DiagnosticLabel> labels, std::optional<Fix> fix) {
+  out_.push_back(
+      Finding{make_diagnostic(code, std::move(message), range, std::move(help), std::move(labels)), std::move(fix)});
 }
 
 }  // namespace rung::lint

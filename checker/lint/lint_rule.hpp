@@ -4,10 +4,14 @@
 // tree, never files: the same rules serve `rung lint`, the language server and the tests.
 #pragma once
 
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <typeindex>
+#include <unordered_map>
 #include <vector>
 
 #include "checker/project/lint_settings.hpp"
@@ -36,6 +40,25 @@ struct Finding {
   std::optional<Fix> fix;
 };
 
+// Analyses several rules share (where each variable is read and written, ...), built by the first
+// rule that asks. One cache serves one lint_all() (its threads lint files in parallel, so a T must
+// make its own lazy parts thread-safe) or one lint_source() call; it lives no longer than that, so
+// it never sees an edited model.
+class AnalysisCache {
+ public:
+  template <typename T>
+  T& get() {
+    std::lock_guard lock(mutex_);
+    std::shared_ptr<void>& slot = entries_[std::type_index(typeid(T))];
+    if (!slot) slot = std::make_shared<T>();
+    return *static_cast<T*>(slot.get());
+  }
+
+ private:
+  std::mutex mutex_;
+  std::unordered_map<std::type_index, std::shared_ptr<void>> entries_;
+};
+
 class LintContext;
 using RuleCheck = void (*)(LintContext& context);
 
@@ -51,8 +74,8 @@ struct Rule {
 class LintContext {
  public:
   LintContext(const check::ProjectModel& model, check::SourceId source, const project::LintSettings& settings,
-              std::vector<Finding>& out)
-      : model_(model), source_(source), settings_(settings), out_(out) {}
+              std::vector<Finding>& out, AnalysisCache* cache = nullptr)
+      : model_(model), source_(source), settings_(settings), out_(out), cache_(cache) {}
 
   const check::ProjectModel& model() const { return model_; }
   check::SourceId source_id() const { return source_; }
@@ -69,10 +92,15 @@ class LintContext {
   // [lint.naming] pattern, or `fallback`.
   std::string_view naming(std::string_view key, std::string_view fallback) const;
   const project::LintSettings& settings() const { return settings_; }
+  // Analyses shared with the other rules of this run (a cache of its own when none was given).
+  AnalysisCache& cache() const;
 
   // Reports a finding of `code` (its registry severity; rung.toml overrides come later).
   void report(std::string_view code, std::string message, TextRange range, std::string help = {},
               std::optional<Fix> fix = std::nullopt);
+  // The same, with labels that point at related code ("first tested here").
+  void report(std::string_view code, std::string message, TextRange range, std::string help,
+              std::vector<DiagnosticLabel> labels, std::optional<Fix> fix = std::nullopt);
 
  private:
   const check::ProjectModel& model_;
@@ -80,6 +108,8 @@ class LintContext {
   const project::LintSettings& settings_;
   std::vector<Finding>& out_;
   mutable std::optional<std::vector<const check::Symbol*>> pous_;
+  AnalysisCache* cache_ = nullptr;
+  mutable std::unique_ptr<AnalysisCache> own_cache_;
 };
 
 // Every rule, ordered by code.

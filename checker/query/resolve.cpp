@@ -40,17 +40,7 @@ ExprInfo type_in_scope(const ProjectModel& model, const Symbol& scope, SyntaxNod
 // of the FB instance it names (the choice BodyChecker::type_call makes before it checks the
 // arguments against the callee's parameters).
 const Symbol* callee_of(const ProjectModel& model, const Symbol& scope, SyntaxNode function) {
-  const ExprInfo info = type_in_scope(model, scope, function);
-  if (const Symbol* symbol = info.symbol) {
-    if (symbol->kind == SymbolKind::Function || symbol->kind == SymbolKind::Method ||
-        symbol->kind == SymbolKind::Action || symbol->kind == SymbolKind::Program) {
-      return symbol;
-    }
-  }
-  const Type* type = underlying(info.type);
-  if (type->kind == TypeKind::Reference && type->element) type = underlying(type->element);
-  if (type->kind == TypeKind::Pou && !info.names_type) return type->declaration;
-  return nullptr;
+  return query::callee_of(type_in_scope(model, scope, function));
 }
 
 // The declared variable a var_declaration node declares first (its type is every name's type).
@@ -111,6 +101,20 @@ const Type* initialized_type(const ProjectModel& model, SourceId source, SyntaxN
 }
 
 }  // namespace
+
+const Symbol* callee_of(const ExprInfo& info) {
+  if (const Symbol* symbol = info.symbol) {
+    if (symbol->kind == SymbolKind::Function || symbol->kind == SymbolKind::Method ||
+        symbol->kind == SymbolKind::Action || symbol->kind == SymbolKind::Program) {
+      return symbol;
+    }
+  }
+  if (!info.type) return nullptr;
+  const Type* type = underlying(info.type);
+  if (type->kind == TypeKind::Reference && type->element) type = underlying(type->element);
+  if (type->kind == TypeKind::Pou && !info.names_type) return type->declaration;
+  return nullptr;
+}
 
 const Symbol* symbol_declared_at(const ProjectModel& model, SourceId source, TextRange name_range) {
   for (const Symbol& symbol : model.source(source).symbols.storage) {

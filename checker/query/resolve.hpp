@@ -9,6 +9,10 @@
 
 #include "checker/project_model.hpp"
 
+namespace rung::check {
+struct ExprInfo;  // semantic/body_checker.hpp
+}
+
 namespace rung::check::query {
 
 // How a name is used where it stands, which decides how it is resolved.
@@ -41,6 +45,11 @@ const Symbol* resolve_name(const ProjectModel& model, SourceId source, SyntaxNod
 
 // The declaration a symbol stands for in queries: a VAR_EXTERNAL is its global variable.
 const Symbol* canonical_symbol(const ProjectModel& model, const Symbol* symbol);
+
+// The POU a call goes to, from the typing of its `function` part: the FUNCTION, METHOD, ACTION or
+// PROGRAM it names, or the block of the FB instance it names (the choice BodyChecker::type_call
+// makes before it checks the arguments against the callee's parameters); nullptr otherwise.
+const Symbol* callee_of(const ExprInfo& function);
 
 // The symbol declared with exactly this name token in `source`, if any.
 const Symbol* symbol_declared_at(const ProjectModel& model, SourceId source, TextRange name_range);

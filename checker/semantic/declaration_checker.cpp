@@ -370,15 +370,9 @@ class DeclarationChecker {
   }
 
   void check_external(const Symbol& variable) {
-    const Symbol* global = model_.find_global_variable(variable.name);
-    if (!global) {
-      // A qualified_only list still provides VAR_EXTERNAL targets in CODESYS.
-      for (SourceId id = 0; id < model_.source_count() && !global; ++id) {
-        for (const Symbol* list : model_.source(id).symbols.global_lists) {
-          if (const Symbol* found = list->own_member(variable.name)) global = found;
-        }
-      }
-    }
+    // A qualified_only list still provides VAR_EXTERNAL targets in CODESYS: find_linked_global
+    // looks into every list.
+    const Symbol* global = model_.find_linked_global(variable.name);
     if (!global) {
       report(codes::kExternalWithoutGlobal,
              fmt::format("VAR_EXTERNAL '{}' has no VAR_GLOBAL of that name", variable.name), variable.name_range,

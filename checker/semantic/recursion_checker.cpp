@@ -250,6 +250,11 @@ const std::vector<Diagnostic>& RecursionIndex::diagnostics(SourceId id) const {
   return id < found_.size() ? found_[id] : kNone;
 }
 
+const std::vector<CallEdge>& RecursionIndex::edges(SourceId id) const {
+  static const std::vector<CallEdge> kNone;
+  return id < edges_.size() ? edges_[id] : kNone;
+}
+
 void RecursionIndex::find_cycles(const ProjectModel& model) {
   found_.assign(edges_.size(), {});
   for (const bool instances : {false, true}) {

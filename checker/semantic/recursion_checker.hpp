@@ -35,6 +35,9 @@ class RecursionIndex {
   void rebuild_source(const ProjectModel& model, SourceId id);
   // E209 diagnostics of one file, in tree coordinates.
   const std::vector<Diagnostic>& diagnostics(SourceId id) const;
+  // The call graph itself: the edges whose caller is declared in `id` (lint rules follow it from
+  // the programs a task runs).
+  const std::vector<CallEdge>& edges(SourceId id) const;
 
  private:
   void find_cycles(const ProjectModel& model);

@@ -75,6 +75,11 @@ void BodyChecker::check_body(SyntaxNode body) {
           IlChecker(*this, model_, pou_).check(code, /*transition=*/true);
         }
       } else if (child.kind() == "sfc_action_block") {
+        // A named action block is a member of the POU and gets its own BodyChecker (check_source
+        // visits every member): checking it here too would report each finding twice.
+        const SyntaxNode name = child.child_by_field("name");
+        const Symbol* member = name ? pou_.own_member(name.text()) : nullptr;
+        if (member && member->node == child) continue;
         if (SyntaxNode statements = child.child_by_field("body"); statements && statements.kind() == "statement_list") {
           collect_labels(statements);
           check_statement_list(statements);

@@ -33,6 +33,16 @@ std::string message_of(const std::string& text, std::string_view code,
 
 // --- Charts that are fine -------------------------------------------------------------------
 
+// An action block is a member of its POU: its body is checked once, not once more with the chart.
+TEST(SfcCheck, ActionBodyFindingsAreReportedOnce) {
+  EXPECT_EQ(found(chart("INITIAL_STEP Init: Fill(N); END_STEP\n"
+                        "TRANSITION FROM Init TO Init := go; END_TRANSITION\n"
+                        "ACTION Fill:\n"
+                        "  go := undefined_name;\n"
+                        "END_ACTION\n")),
+            Found({"E001@8"}));
+}
+
 TEST(SfcCheck, CycleWithActionsAndTransitionLists) {
   EXPECT_EQ(found(chart("INITIAL_STEP Init: Fill(N); END_STEP\n"
                         "TRANSITION FROM Init TO (Heat, Stir) := go; END_TRANSITION\n"
