@@ -168,6 +168,13 @@ std::vector<FileDiagnostics> Workspace::check_all(unsigned threads) const {
   return results;
 }
 
+SourceId Workspace::add_file(std::string path, std::string_view bytes) {
+  const SourceId id = model_->add_source(std::make_unique<Document>(Document::from_bytes(std::move(path), bytes)));
+  model_->link();
+  compile_conditionally(*model_);
+  return id;
+}
+
 std::vector<SourceId> Workspace::update(SourceId id, std::string text) {
   const std::string path = model_->source(id).document->path();
   auto document = std::make_unique<Document>(Document::from_bytes(path, text));

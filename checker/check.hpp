@@ -52,6 +52,11 @@ class Workspace {
   // An editor changed a file: re-parse it and re-check what depends on it. Returns the ids of
   // the files whose diagnostics may have changed.
   std::vector<SourceId> update(SourceId id, std::string text);
+  // A file the project did not have (created on disk, or opened in an editor): parsed, added and
+  // the project linked again. Every project file's diagnostics may change.
+  SourceId add_file(std::string path, std::string_view bytes);
+
+  const project::ProjectConfig& config() const { return config_; }
 
   std::vector<std::string> load_errors;  // files that could not be read
 

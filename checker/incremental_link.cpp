@@ -83,7 +83,8 @@ bool ProjectModel::relink_bodies_only(Source& source, std::unique_ptr<Document>&
   resolve_declarations(source);
   address_table_ = std::make_unique<AddressTable>(build_address_table(*this));
   configuration_table_ = std::make_unique<ConfigurationTable>(build_configuration_table(*this));
-  recursion_index_->rebuild_source(*this, id);
+  // A call graph not built yet is built whole when first asked for.
+  if (recursion_current_.load(std::memory_order_acquire)) recursion_index_->rebuild_source(*this, id);
   return true;
 }
 

@@ -155,7 +155,18 @@ void ProjectModel::link() {
   }
   address_table_ = std::make_unique<AddressTable>(build_address_table(*this));
   configuration_table_ = std::make_unique<ConfigurationTable>(build_configuration_table(*this));
-  recursion_index_->rebuild(*this);
+  recursion_current_.store(false, std::memory_order_release);  // rebuilt when first asked for
+}
+
+const RecursionIndex& ProjectModel::recursion_index() const {
+  if (!recursion_current_.load(std::memory_order_acquire)) {
+    std::lock_guard lock(recursion_mutex_);
+    if (!recursion_current_.load(std::memory_order_relaxed)) {
+      recursion_index_->rebuild(*this);
+      recursion_current_.store(true, std::memory_order_release);
+    }
+  }
+  return *recursion_index_;
 }
 
 void ProjectModel::index_source(Source& source) {

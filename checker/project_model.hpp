@@ -5,6 +5,7 @@
 // checked in parallel and the language server can ask it questions.
 #pragma once
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -127,7 +128,9 @@ class ProjectModel {
   // parallel never build them twice.
   const AddressTable& address_table() const { return *address_table_; }
   const ConfigurationTable& configuration_table() const { return *configuration_table_; }
-  const RecursionIndex& recursion_index() const { return *recursion_index_; }
+  // The call graph is built on first use after link() (thread-safe): `rung check` asks for it,
+  // while `rung lint` on a project without CONFIGURATION and most editor requests never do.
+  const RecursionIndex& recursion_index() const;
 
   // Everything in declaration order: for checks that walk all POUs.
   std::vector<const Symbol*> top_level_symbols(SourceId id) const;
@@ -162,6 +165,8 @@ class ProjectModel {
   std::unique_ptr<AddressTable> address_table_;
   std::unique_ptr<ConfigurationTable> configuration_table_;
   std::unique_ptr<RecursionIndex> recursion_index_;
+  mutable std::mutex recursion_mutex_;
+  mutable std::atomic<bool> recursion_current_{false};  // recursion_index_ matches the linked model
   unsigned threads_ = 1;
   mutable std::mutex types_mutex_;  // derived types may be created while bodies are checked
 };

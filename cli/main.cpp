@@ -9,6 +9,7 @@
 #include "cli/fmt_command.hpp"
 #include "cli/init_command.hpp"
 #include "cli/lint_command.hpp"
+#include "cli/lsp_command.hpp"
 #include "cli/parse_command.hpp"
 
 namespace {
@@ -118,6 +119,15 @@ int run(int argc, char** argv) {
   init->add_option("dir", init_dir, "The project folder (default: the current folder)");
   init->add_flag("--force", init_force, "Overwrite an existing rung.toml");
 
+  rung::cli::LspCommandOptions lsp_options;
+  uint16_t lsp_port = 0;
+  CLI::App* lsp = app.add_subcommand(
+      "lsp", "Run the language server (LSP 3.17) for editors: stdio by default, or TCP with --port");
+  CLI::Option* port_option = lsp->add_option("--port", lsp_port, "Listen on 127.0.0.1:PORT instead of stdio (0: any free port)");
+  bool lsp_stdio = false;
+  lsp->add_flag("--stdio", lsp_stdio, "Use standard input/output (the default; accepted for clients that pass it)");
+  lsp->add_option("-j,--jobs", lsp_options.threads, "Threads for indexing (default: one per core)");
+
   std::string help_topic;
   CLI::App* help = app.add_subcommand("help", "Show help for rung or for one command");
   help->add_option("command", help_topic, "The command to explain");
@@ -156,6 +166,10 @@ int run(int argc, char** argv) {
   rung::cli::ColorChoice color = rung::cli::ColorChoice::Auto;
   rung::cli::parse_color_choice(color_text, &color);
 
+  if (*lsp) {
+    if (port_option->count() > 0) lsp_options.port = lsp_port;
+    return rung::cli::run_lsp_command(lsp_options);
+  }
   if (*init) return rung::cli::run_init_command(init_dir, init_force, stdout, stderr);
   if (*explain) return rung::cli::run_explain_command(explain_code, stdout, stderr);
   if (*fmt_command) {

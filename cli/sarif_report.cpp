@@ -46,7 +46,7 @@ nlohmann::json sarif_report(const std::vector<SarifFinding>& findings) {
         {{"id", std::string(info.code)},
          {"name", std::string(info.title)},
          {"shortDescription", {{"text", std::string(info.summary)}}},
-         {"helpUri", fmt::format("https://github.com/rung-plc/rung/blob/main/docs/diagnostics/{}.md", info.code)},
+         {"helpUri", diagnostic_docs_url(info.code)},
          {"defaultConfiguration", {{"level", sarif_level(info.default_severity)}}}});
   }
   nlohmann::json results = nlohmann::json::array();

@@ -13,6 +13,7 @@
 #include "formatter/printer.hpp"
 #include "formatter/rewrites.hpp"
 #include "formatter/token_check.hpp"
+#include "formatter/whitespace_check.hpp"
 #include "parser/source/flat_comments.hpp"
 #include "parser/syntax_diagnostics.hpp"
 
@@ -107,7 +108,12 @@ std::string first_syntax_error(const SyntaxTree& tree, std::string_view text) {
   return fmt::format("line {}: syntax error", line_of(text, at));
 }
 
-std::string lay_out_and_print(const SyntaxTree& tree, std::string_view text, const project::FormatSettings& settings) {
+struct Printed {
+  std::string text;
+  std::vector<Leaf> leaves;  // the tokens, comments and pragmas it was printed from
+};
+
+Printed lay_out_and_print(const SyntaxTree& tree, std::string_view text, const project::FormatSettings& settings) {
   std::vector<uint32_t> breaks;
   WalkOptions options;
   options.collect_breaks = settings.max_line_width > 0;
@@ -120,20 +126,13 @@ std::string lay_out_and_print(const SyntaxTree& tree, std::string_view text, con
     walk = walk_leaves(tree, text, options);
     layout = lay_out(walk, text, settings);
   }
-  return print(walk, layout, text, settings);
+  std::string printed = print(walk, layout, text, settings);
+  return {std::move(printed), std::move(walk.leaves)};
 }
 
 }  // namespace
 
 FormatResult format_text(std::string_view text, const project::FormatSettings& settings, const FormatRequest& request) {
-  FormatResult result;
-  result.text = std::string(text);
-  auto refuse = [&](Status status, std::string message) {
-    result.status = status;
-    result.message = std::move(message);
-    return result;
-  };
-
   bool flat = request.flat_comments;
   SyntaxTree tree = parse(text, flat);
   if (!parses_cleanly(tree, flat) && !flat) {
@@ -148,6 +147,21 @@ FormatResult format_text(std::string_view text, const project::FormatSettings& s
       }
     }
   }
+  FormatRequest read_as = request;
+  read_as.flat_comments = flat;
+  return format_parsed(tree, text, settings, read_as);
+}
+
+FormatResult format_parsed(const SyntaxTree& tree, std::string_view text, const project::FormatSettings& settings,
+                           const FormatRequest& request) {
+  FormatResult result;
+  result.text = std::string(text);
+  auto refuse = [&](Status status, std::string message) {
+    result.status = status;
+    result.message = std::move(message);
+    return result;
+  };
+  const bool flat = request.flat_comments;
   if (!parses_cleanly(tree, flat)) return refuse(Status::SyntaxErrors, first_syntax_error(tree, text));
 
   // END_ ';' and ELSE IF rewrites first, on the text; the layout then works on the rewritten
@@ -166,11 +180,19 @@ FormatResult format_text(std::string_view text, const project::FormatSettings& s
   const SyntaxTree& layout_tree = rewritten_tree ? *rewritten_tree : tree;
   const std::string_view layout_text = rewritten_tree ? std::string_view(rewritten) : text;
 
-  std::string formatted = lay_out_and_print(layout_tree, layout_text, settings);
+  Printed printed = lay_out_and_print(layout_tree, layout_text, settings);
+  std::string& formatted = printed.text;
 
-  const SyntaxTree formatted_tree = parse(formatted, flat);
-  if (auto problem = check_tokens({&tree, text}, {&formatted_tree, formatted}, rewrites)) {
-    return refuse(Status::Unsafe, *problem);
+  // A result that only moves whitespace in ways the grammar cannot notice is proven safe
+  // without parsing it; rewrites, comments read flat and anything the quick check cannot decide
+  // go through the full check on a parse of the result.
+  const bool proven =
+      rewrites.empty() && !flat && only_safe_whitespace_changes({&tree, text}, printed.leaves, formatted);
+  if (!proven) {
+    const SyntaxTree formatted_tree = parse(formatted, flat);
+    if (auto problem = check_tokens({&tree, text}, {&formatted_tree, formatted}, rewrites)) {
+      return refuse(Status::Unsafe, *problem);
+    }
   }
   result.changed = formatted != text;
   result.text = std::move(formatted);

@@ -4,6 +4,8 @@
 // Safety: after formatting, the tokens of the result (whitespace and comments set aside, keyword
 // case ignored) are compared with the input's; a difference means a formatter bug, and the input
 // is returned unchanged with Status::Unsafe — a file is never written with a changed meaning.
+// Most results only change whitespace in ways the grammar cannot notice, which whitespace_check
+// proves without parsing them; the others are parsed and compared token by token (token_check).
 #pragma once
 
 #include <string>
@@ -11,6 +13,7 @@
 
 #include "checker/project/format_settings.hpp"
 #include "parser/diagnostic.hpp"
+#include "parser/syntax_tree.hpp"
 
 namespace rung::format {
 
@@ -22,9 +25,9 @@ enum class Status {
 
 struct FormatResult {
   Status status = Status::Formatted;
-  std::string text;     // the result; the input itself unless Status::Formatted
+  std::string text;      // the result; the input itself unless Status::Formatted
   bool changed = false;  // text differs from the input
-  std::string message;  // for SyntaxErrors and Unsafe: "line 12: ..." (1-based, in the input)
+  std::string message;   // for SyntaxErrors and Unsafe: "line 12: ..." (1-based, in the input)
 };
 
 struct FormatRequest {
@@ -35,6 +38,12 @@ struct FormatRequest {
 // Formats a whole text (a plain source file, or one ST/IL part of a vendor container).
 FormatResult format_text(std::string_view text, const project::FormatSettings& settings,
                          const FormatRequest& request = {});
+
+// The same for a text whose syntax tree the caller already has (the language server keeps one
+// per open document): `tree` was parsed from `text`, or from `text` with its comments read flat
+// when `request.flat_comments` is set. Saves the first of format_text's parses.
+FormatResult format_parsed(const SyntaxTree& tree, std::string_view text, const project::FormatSettings& settings,
+                           const FormatRequest& request = {});
 
 // Formats only the lines that intersect `range` (byte offsets in `text`), for the language
 // server's range formatting; every other byte stays as it is.

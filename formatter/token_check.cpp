@@ -6,79 +6,10 @@
 
 #include "formatter/keyword_case.hpp"
 #include "formatter/syntax_kinds.hpp"
+#include "formatter/token_stream.hpp"
 
 namespace rung::format {
 namespace {
-
-struct Token {
-  std::string_view text;
-  uint32_t offset = 0;       // in its own text (for the input: where the message points)
-  bool ignore_case = false;  // keyword or elementary type name
-};
-
-struct Stream {
-  std::vector<Token> tokens;
-  std::vector<Token> trivia;                         // comments and pragmas
-  std::vector<std::pair<TSSymbol, uint32_t>> shape;  // named nodes in preorder, with their offsets
-  bool has_error = false;
-};
-
-// The token stream of a tree with an explicit frame stack (the parent of each leaf decides its
-// case class), in one cursor walk.
-Stream stream_of(CheckInput in) {
-  Stream s;
-  SyntaxNode root = in.tree->root();
-  if (!root) {
-    s.has_error = true;
-    return s;
-  }
-  s.has_error = root.has_error();
-  struct Parent {
-    NodeKind kind;
-    uint32_t begin;
-    uint32_t children;
-  };
-  std::vector<Parent> parents{{symbol_info(root.symbol()).node, root.begin(), root.child_count()}};
-  TSTreeCursor cursor = ts_tree_cursor_new(root.raw());
-  if (ts_tree_cursor_goto_first_child(&cursor)) {
-    while (true) {
-      TSNode raw = ts_tree_cursor_current_node(&cursor);
-      SyntaxNode node(raw, root.source());
-      const SymbolInfo& info = symbol_info(node.symbol());
-      const uint32_t children = ts_node_child_count(raw);
-      const bool extra = ts_node_is_extra(raw);
-      const bool trivia = extra && (info.node == NodeKind::Comment || info.node == NodeKind::Pragma);
-      bool descended = false;
-      if (trivia) {
-        s.trivia.push_back({in.text.substr(node.begin(), node.end() - node.begin()), node.begin(), false});
-      } else if (children == 0) {
-        if (node.is_missing()) s.has_error = true;
-        if (node.end() > node.begin()) {
-          const std::string_view text = in.text.substr(node.begin(), node.end() - node.begin());
-          const Parent& p = parents.back();
-          const LeafPlace place{p.kind, node.begin() == p.begin, p.children == 1};
-          s.tokens.push_back({text, node.begin(), case_class(info, place, text) != CaseClass::None});
-        }
-        if (info.named) s.shape.emplace_back(node.symbol(), node.begin());
-      } else {
-        if (info.named) s.shape.emplace_back(node.symbol(), node.begin());
-        parents.push_back({info.node, node.begin(), children});
-        descended = ts_tree_cursor_goto_first_child(&cursor);
-        if (!descended) parents.pop_back();
-      }
-      if (descended) continue;
-      bool moved = false;
-      while (!(moved = ts_tree_cursor_goto_next_sibling(&cursor))) {
-        if (!ts_tree_cursor_goto_parent(&cursor)) break;
-        parents.pop_back();
-        if (parents.empty()) break;
-      }
-      if (!moved) break;
-    }
-  }
-  ts_tree_cursor_delete(&cursor);
-  return s;
-}
 
 uint32_t line_of(std::string_view text, uint32_t offset) {
   offset = std::min<uint32_t>(offset, static_cast<uint32_t>(text.size()));
@@ -165,8 +96,8 @@ std::optional<std::string> apply_to_tokens(CheckInput input, const std::vector<R
 }  // namespace
 
 std::optional<std::string> check_tokens(CheckInput input, CheckInput output, const std::vector<Rewrite>& rewrites) {
-  Stream in = stream_of(input);
-  Stream out = stream_of(output);
+  TokenStream in = token_stream_of(input, rewrites.empty());
+  TokenStream out = token_stream_of(output, rewrites.empty());
   if (out.has_error) return std::string("line 1: the formatted text does not parse (a formatter bug)");
   if (auto problem = apply_to_tokens(input, rewrites, in.tokens)) return problem;
 

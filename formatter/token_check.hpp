@@ -12,14 +12,9 @@
 #include <vector>
 
 #include "formatter/rewrites.hpp"
-#include "parser/syntax_tree.hpp"
+#include "formatter/token_stream.hpp"
 
 namespace rung::format {
-
-struct CheckInput {
-  const SyntaxTree* tree = nullptr;
-  std::string_view text;  // the real bytes (the tree may have been parsed from flattened comments)
-};
 
 // nullopt when the output is safe; else "line N: ..." naming the first difference (N in the input).
 std::optional<std::string> check_tokens(CheckInput input, CheckInput output, const std::vector<Rewrite>& rewrites);

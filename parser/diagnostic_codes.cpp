@@ -327,4 +327,8 @@ const DiagnosticCodeInfo* find_diagnostic_code(std::string_view code) {
   return nullptr;
 }
 
+std::string diagnostic_docs_url(std::string_view code) {
+  return "https://github.com/rung-plc/rung/blob/main/docs/diagnostics/" + std::string(code) + ".md";
+}
+
 }  // namespace rung

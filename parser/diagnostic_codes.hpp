@@ -4,6 +4,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct DiagnosticCodeInfo {
 
 std::span<const DiagnosticCodeInfo> all_diagnostic_codes();
 const DiagnosticCodeInfo* find_diagnostic_code(std::string_view code);
+
+// Where a code's page (docs/diagnostics/<CODE>.md) is published: SARIF helpUri, LSP codeDescription.
+std::string diagnostic_docs_url(std::string_view code);
 
 // A diagnostic of a registered code, with the code's default severity.
 Diagnostic make_diagnostic(std::string_view code, std::string message, TextRange range, std::string help = {},

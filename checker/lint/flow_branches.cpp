@@ -53,8 +53,9 @@ bool is_substantial(SyntaxNode body) {
 
 // Whether the loop's body (the statements it repeats) is empty, with no comment anywhere in it.
 void check_loop_body(LintContext& context, SyntaxNode loop) {
+  const NodeList& nodes = context.nodes();
   const SyntaxNode body = loop.child_by_field("body");
-  if (!is_empty_body(body) || has_comment_in(loop, loop.range())) return;
+  if (!is_empty_body(nodes, body) || has_comment_in(nodes, loop, loop.range())) return;
   const std::string keyword = loop.kind() == "for_statement"     ? "FOR"
                               : loop.kind() == "while_statement" ? "WHILE"
                                                                  : "REPEAT";
@@ -66,7 +67,7 @@ void check_loop_body(LintContext& context, SyntaxNode loop) {
 }  // namespace
 
 void check_case_without_else(LintContext& context) {
-  for_each_of_kind(context.root(), "case_statement", [&](SyntaxNode statement) {
+  for_each_of_kind(context, "case_statement", [&](SyntaxNode statement) {
     if (is_broken(statement) || statement.first_child_of_kind("else_clause")) return;
     const SyntaxNode value = statement.child_by_field("value");
     if (!value) return;
@@ -77,19 +78,23 @@ void check_case_without_else(LintContext& context) {
 
 void check_empty_branch(LintContext& context) {
   const std::string_view text = context.text();
-  walk_preorder(context.root(), [&](SyntaxNode node) {
-    if (node.is_extra()) return false;
-    const std::string_view kind = node.kind();
+  const NodeList& nodes = context.nodes();
+  nodes.walk(0, [&](uint32_t i) {
+    if (nodes.is_extra(i)) return false;
+    const std::string_view kind = nodes.kind(i);
     if (kind == "for_statement" || kind == "while_statement" || kind == "repeat_statement") {
+      const SyntaxNode node = nodes.node(i);
       if (!is_broken(node)) check_loop_body(context, node);
       return true;
     }
-    if ((kind != "if_statement" && kind != "case_statement") || is_broken(node)) return true;
+    if (kind != "if_statement" && kind != "case_statement") return true;
+    const SyntaxNode node = nodes.node(i);
+    if (is_broken(node)) return true;
     const bool in_case = kind == "case_statement";
-    const std::vector<Branch> branches = branches_of(node);
-    for (size_t i = 0; i < branches.size(); ++i) {
-      const Branch& branch = branches[i];
-      if (!is_empty_body(branch.body) || has_comment_in(node, branch.span)) continue;
+    const std::vector<Branch> branches = branches_of(nodes, node);
+    for (size_t b = 0; b < branches.size(); ++b) {
+      const Branch& branch = branches[b];
+      if (!is_empty_body(nodes, branch.body) || has_comment_in(nodes, node, branch.span)) continue;
       context.report("L032", branch_name(text, branch) + " is empty", branch.head,
                      is_else(branch) && !in_case
                          ? "remove the empty ELSE, or write a comment saying why nothing is done here"
@@ -100,16 +105,20 @@ void check_empty_branch(LintContext& context) {
 }
 
 void check_duplicate_condition(LintContext& context) {
-  for_each_of_kind(context.root(), "if_statement", [&](SyntaxNode statement) {
+  const NodeList& nodes = context.nodes();
+  for_each_of_kind(nodes, 0, "if_statement", [&](uint32_t i) {
+    // Without ELSIF there is one condition: nothing to repeat.
+    if (nodes.first_child_of_kind(i, "elsif_clause") == NodeList::kNone) return;
+    const SyntaxNode statement = nodes.node(i);
     if (is_broken(statement)) return;
     std::vector<SyntaxNode> earlier;
-    for (const Branch& branch : branches_of(statement)) {
+    for (const Branch& branch : branches_of(nodes, statement)) {
       if (!branch.condition) continue;
       // f() may answer differently the second time (an edge, a counter): not a repeat.
-      if (contains_call(branch.condition)) continue;
+      if (contains_call(nodes, branch.condition)) continue;
       const SyntaxNode* first = nullptr;
       for (const SyntaxNode& previous : earlier) {
-        if (same_tokens(previous, branch.condition)) {
+        if (same_tokens(nodes, previous, branch.condition)) {
           first = &previous;
           break;
         }
@@ -128,12 +137,18 @@ void check_duplicate_condition(LintContext& context) {
 
 void check_identical_branches(LintContext& context) {
   const std::string_view text = context.text();
-  for_each_of_kind(context.root(), "if_statement", [&](SyntaxNode statement) {
-    if (is_broken(statement)) return;
-    const std::vector<Branch> branches = branches_of(statement);
+  const NodeList& nodes = context.nodes();
+  for_each_of_kind(nodes, 0, "if_statement", [&](uint32_t i) {
     // Only IF c THEN <s> ELSE <s> END_IF: with ELSIF, equal branches may be a deliberate order.
+    if (nodes.first_child_of_kind(i, "else_clause") == NodeList::kNone ||
+        nodes.first_child_of_kind(i, "elsif_clause") != NodeList::kNone) {
+      return;
+    }
+    const SyntaxNode statement = nodes.node(i);
+    if (is_broken(statement)) return;
+    const std::vector<Branch> branches = branches_of(nodes, statement);
     if (branches.size() != 2 || !is_else(branches[1])) return;
-    if (is_empty_body(branches[0].body) || !same_tokens(branches[0].body, branches[1].body)) return;
+    if (is_empty_body(nodes, branches[0].body) || !same_tokens(nodes, branches[0].body, branches[1].body)) return;
     context.report("L034",
                    "the THEN and ELSE branches of '" + in_message(head_text(text, branches[0].head)) + "' are the same",
                    branches[0].head,
@@ -141,13 +156,13 @@ void check_identical_branches(LintContext& context) {
                    "that is wrong",
                    {DiagnosticLabel{branches[1].head, "the ELSE branch does the same"}});
   });
-  for_each_of_kind(context.root(), "case_statement", [&](SyntaxNode statement) {
+  for_each_of_kind(context, "case_statement", [&](SyntaxNode statement) {
     if (is_broken(statement)) return;
-    const std::vector<Branch> branches = branches_of(statement);
+    const std::vector<Branch> branches = branches_of(nodes, statement);
     for (size_t i = 1; i < branches.size(); ++i) {
-      if (is_empty_body(branches[i].body) || is_else(branches[i]) || !is_substantial(branches[i].body)) continue;
+      if (is_empty_body(nodes, branches[i].body) || is_else(branches[i]) || !is_substantial(branches[i].body)) continue;
       for (size_t j = 0; j < i; ++j) {
-        if (is_else(branches[j]) || !same_tokens(branches[j].body, branches[i].body)) continue;
+        if (is_else(branches[j]) || !same_tokens(nodes, branches[j].body, branches[i].body)) continue;
         const std::string first = in_message(head_text(text, branches[j].head));
         const std::string second = in_message(head_text(text, branches[i].head));
         context.report("L034", "CASE branch '" + second + "' does the same as branch '" + first + "'", branches[i].head,

@@ -65,8 +65,11 @@ std::optional<BoolAssignment> single_bool_assignment(SyntaxNode body) {
 
 void check_double_negation(LintContext& context) {
   uint32_t covered_end = 0;  // NOT NOT NOT x: the pair found first covers the inner NOT
-  for_each_of_kind(context.root(), "unary_expression", [&](SyntaxNode outer) {
-    if (!is_not(outer) || outer.begin() < covered_end || is_broken(outer)) return;
+  const NodeList& nodes = context.nodes();
+  for_each_of_kind(nodes, 0, "unary_expression", [&](uint32_t i) {
+    if (!check::names_equal(operator_text(nodes, i), "NOT")) return;  // is_not() without building the node
+    const SyntaxNode outer = nodes.node(i);
+    if (outer.begin() < covered_end || is_broken(outer)) return;
     const SyntaxNode inner = without_parentheses(outer.child_by_field("operand"));
     if (!is_not(inner)) return;
     const SyntaxNode operand = inner.child_by_field("operand");
@@ -75,16 +78,19 @@ void check_double_negation(LintContext& context) {
     std::optional<Fix> fix;
     // A NOT's operand is unary or primary (NOT binds tighter than every binary operator), so it
     // can stand where the outer NOT stood without parentheses.
-    if (!contains_comment(outer)) fix = replace(outer, std::string(operand.text()), "remove the two NOTs");
+    if (!contains_comment(nodes, outer)) fix = replace(outer, std::string(operand.text()), "remove the two NOTs");
     context.report("L036", "'" + in_message(outer.text()) + "' is just '" + in_message(operand.text()) + "'",
                    outer.range(), "two negations cancel out: write the operand alone", std::move(fix));
   });
 }
 
 void check_compare_with_bool_literal(LintContext& context) {
-  for_each_of_kind(context.root(), "binary_expression", [&](SyntaxNode comparison) {
-    const std::string op = ast::operator_of(comparison);
-    if ((op != "=" && op != "<>") || is_broken(comparison)) return;
+  const NodeList& nodes = context.nodes();
+  for_each_of_kind(nodes, 0, "binary_expression", [&](uint32_t i) {
+    const std::string_view op = operator_text(nodes, i);
+    if (op != "=" && op != "<>") return;
+    const SyntaxNode comparison = nodes.node(i);
+    if (is_broken(comparison)) return;
     const SyntaxNode left = comparison.child_by_field("left");
     const SyntaxNode right = comparison.child_by_field("right");
     std::optional<bool> literal = bool_literal(right);
@@ -108,7 +114,7 @@ void check_compare_with_bool_literal(LintContext& context) {
     // is; after NOT it needs parentheses unless it is primary.
     const std::string replacement = keeps ? operand : "NOT " + operand_text(other);
     std::optional<Fix> fix;
-    if (!contains_comment(comparison)) fix = replace(comparison, replacement, "compare without the literal");
+    if (!contains_comment(nodes, comparison)) fix = replace(comparison, replacement, "compare without the literal");
     context.report("L037", "comparing the BOOL " + in_message(operand) + " with " + (*literal ? "TRUE" : "FALSE"),
                    comparison.range(), "write " + in_message(replacement) + ": it says the same, shorter",
                    std::move(fix));
@@ -116,21 +122,25 @@ void check_compare_with_bool_literal(LintContext& context) {
 }
 
 void check_if_to_assignment(LintContext& context) {
-  for_each_of_kind(context.root(), "if_statement", [&](SyntaxNode statement) {
-    if (is_broken(statement) || statement.first_child_of_kind("elsif_clause")) return;
-    const SyntaxNode else_clause = statement.first_child_of_kind("else_clause");
+  const NodeList& nodes = context.nodes();
+  for_each_of_kind(nodes, 0, "if_statement", [&](uint32_t i) {
+    const uint32_t else_index = nodes.first_child_of_kind(i, "else_clause");
+    if (else_index == NodeList::kNone || nodes.first_child_of_kind(i, "elsif_clause") != NodeList::kNone) return;
+    const SyntaxNode statement = nodes.node(i);
+    if (is_broken(statement)) return;
+    const SyntaxNode else_clause = nodes.node(else_index);
     const SyntaxNode condition = statement.child_by_field("condition");
     if (!else_clause || !condition) return;
     const std::optional<BoolAssignment> then_part = single_bool_assignment(statement.child_by_field("body"));
     const std::optional<BoolAssignment> else_part = single_bool_assignment(else_clause.child_by_field("body"));
     if (!then_part || !else_part || then_part->value == else_part->value) return;
-    if (!same_tokens(then_part->target, else_part->target)) return;
+    if (!same_tokens(nodes, then_part->target, else_part->target)) return;
     const std::string target(then_part->target.text());
     const std::string value = then_part->value ? std::string(condition.text()) : "NOT " + operand_text(condition);
     const std::string replacement = target + " := " + value + ";";
     // A comment inside would be lost by the rewrite: then only the finding, no fix.
     std::optional<Fix> fix;
-    if (!contains_comment(statement)) fix = replace(statement, replacement, "assign the condition");
+    if (!contains_comment(nodes, statement)) fix = replace(statement, replacement, "assign the condition");
     context.report("L038",
                    "this IF only assigns " + (then_part->value ? std::string("") : "NOT ") + "its condition to " +
                        in_message(target),

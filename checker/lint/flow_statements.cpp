@@ -46,22 +46,24 @@ bool accesses_property(check::BodyChecker& checker, SyntaxNode target) {
 
 // --- L042 ---------------------------------------------------------------------------------------
 
-bool is_loop(SyntaxNode node) {
-  const std::string_view kind = node.kind();
+bool is_loop(std::string_view kind) {
   return kind == "for_statement" || kind == "while_statement" || kind == "repeat_statement";
 }
 
-// Whether the body of `loop` can leave it: RETURN or a jump anywhere in it, or an EXIT that is
-// not inside a nested loop (there it leaves only the nested one).
-bool can_leave(SyntaxNode loop) {
-  const SyntaxNode body = loop.child_by_field("body");
+// Whether the body of `loop` (node `loop` of `nodes`) can leave it: RETURN or a jump anywhere in
+// it, or an EXIT that is not inside a nested loop (there it leaves only the nested one).
+bool can_leave(const NodeList& nodes, uint32_t loop) {
+  static const TSFieldId kBody = NodeList::field_id("body");
+  const uint32_t body = nodes.child_by_field(loop, kBody);
+  if (body == NodeList::kNone) return false;
   bool leaves = false;
-  for_each_of_kind(body, "return_statement", [&](SyntaxNode) { leaves = true; });
-  for_each_of_kind(body, "jmp_statement", [&](SyntaxNode) { leaves = true; });
-  walk_preorder(body, [&](SyntaxNode node) {
-    if (leaves || node.is_extra() || !node.is_named()) return false;
-    leaves = node.kind() == "exit_statement";
-    return !leaves && !is_loop(node);
+  for_each_of_kind(nodes, body, "return_statement", [&](uint32_t) { leaves = true; });
+  for_each_of_kind(nodes, body, "jmp_statement", [&](uint32_t) { leaves = true; });
+  nodes.walk(body, [&](uint32_t i) {
+    if (leaves || nodes.is_extra(i) || !nodes.is_named(i)) return false;
+    const std::string_view kind = nodes.kind(i);
+    leaves = kind == "exit_statement";
+    return !leaves && !is_loop(kind);
   });
   return leaves;
 }
@@ -74,13 +76,16 @@ bool is_literal(SyntaxNode condition, std::string_view value) {
 }  // namespace
 
 void check_endless_loop(LintContext& context) {
-  walk_preorder(context.root(), [&](SyntaxNode node) {
-    if (node.is_extra()) return false;
-    const std::string_view kind = node.kind();
+  const NodeList& nodes = context.nodes();
+  nodes.walk(0, [&](uint32_t i) {
+    if (nodes.is_extra(i)) return false;
+    const std::string_view kind = nodes.kind(i);
+    if (kind != "while_statement" && kind != "repeat_statement") return true;
+    const SyntaxNode node = nodes.node(i);
     const SyntaxNode condition = node.child_by_field("condition");
     const bool endless = (kind == "while_statement" && is_literal(condition, "TRUE")) ||
                          (kind == "repeat_statement" && is_literal(condition, "FALSE"));
-    if (endless && !is_broken(node) && !can_leave(node)) {
+    if (endless && !is_broken(node) && !can_leave(nodes, i)) {
       const bool is_while = kind == "while_statement";
       context.report(
           "L042",
@@ -104,51 +109,62 @@ void check_empty_statement(LintContext& context) {
       if (child.kind() == "statement_list") skipped.push_back(child.begin());
     }
   }
-  walk_preorder(root, [&](SyntaxNode node) {
+  const NodeList& nodes = context.nodes();
+  nodes.walk(0, [&](uint32_t i) {
     // Error recovery turns prose and broken code into runs of ';': judge only what parsed.
-    if (node.is_extra() || node.is_error()) return false;
-    const std::string_view kind = node.kind();
+    if (nodes.is_extra(i) || nodes.is_error(i)) return false;
+    const std::string_view kind = nodes.kind(i);
     if (kind == "if_statement" || kind == "case_statement") {
-      for (const Branch& branch : branches_of(node)) {
-        if (branch.body && is_empty_body(branch.body) && has_comment_in(node, branch.span)) {
+      const SyntaxNode node = nodes.node(i);
+      for (const Branch& branch : branches_of(nodes, node)) {
+        if (branch.body && is_empty_body(nodes, branch.body) && has_comment_in(nodes, node, branch.span)) {
           skipped.push_back(branch.body.begin());
         }
       }
-    } else if (is_loop(node)) {
+    } else if (is_loop(kind)) {
+      const SyntaxNode node = nodes.node(i);
       const SyntaxNode body = node.child_by_field("body");
-      if (body && is_empty_body(body) && has_comment_in(node, node.range())) skipped.push_back(body.begin());
+      if (body && is_empty_body(nodes, body) && has_comment_in(nodes, node, node.range()))
+        skipped.push_back(body.begin());
     }
     if (kind != "statement_list") return true;
-    if (node.has_error() || std::find(skipped.begin(), skipped.end(), node.begin()) != skipped.end()) {
+    if (nodes.has_error(i) || std::find(skipped.begin(), skipped.end(), nodes.begin(i)) != skipped.end()) {
       return true;
     }
-    SyntaxNode previous;
-    for (SyntaxNode statement : node.named_children()) {
-      if (statement.is_extra()) continue;
+    uint32_t previous = NodeList::kNone;
+    nodes.for_each_child(i, [&](uint32_t statement) {
+      if (!nodes.is_named(statement) || nodes.is_extra(statement)) return;
       // `lbl: ;` gives a jump label at the end of a list the statement it needs.
-      const bool after_label = previous && previous.kind() == "label";
+      const bool after_label = previous != NodeList::kNone && nodes.kind(previous) == "label";
       previous = statement;
-      if (statement.kind() != "empty_statement" || after_label) continue;
-      context.report("L031", "stray ';': an empty statement that does nothing", statement.range(),
+      if (nodes.kind(statement) != "empty_statement" || after_label) return;
+      const SyntaxNode node = nodes.node(statement);
+      context.report("L031", "stray ';': an empty statement that does nothing", node.range(),
                      "remove the ';' (END_IF; END_CASE; and the like are not empty statements); to leave a branch "
                      "empty on purpose, say so in a comment",
-                     removal_fix(context, statement, "remove the empty statement"));
-    }
+                     removal_fix(context, node, "remove the empty statement"));
+    });
     return true;
   });
 }
 
 void check_self_assignment(LintContext& context) {
-  for_each_of_kind(context.root(), "assignment_statement", [&](SyntaxNode statement) {
+  static const TSFieldId kOperator = NodeList::field_id("operator");
+  static const TSFieldId kLeft = NodeList::field_id("left");
+  static const TSFieldId kRight = NodeList::field_id("right");
+  const NodeList& nodes = context.nodes();
+  for_each_of_kind(nodes, 0, "assignment_statement", [&](uint32_t i) {
+    const uint32_t op = nodes.child_by_field(i, kOperator);
+    const uint32_t left_index = nodes.child_by_field(i, kLeft);
+    const uint32_t right_index = nodes.child_by_field(i, kRight);
+    if (op == NodeList::kNone || nodes.text(op) != ":=" || !same_tokens(nodes, left_index, right_index)) return;
+    const SyntaxNode statement = nodes.node(i);
     if (is_broken(statement)) return;
-    const SyntaxNode op = statement.child_by_field("operator");
-    const SyntaxNode left = statement.child_by_field("left");
-    const SyntaxNode right = statement.child_by_field("right");
-    if (!op || op.text() != ":=" || !left || !right || !same_tokens(left, right)) return;
+    const SyntaxNode left = nodes.node(left_index);
     // a[f()] := a[f()] calls f twice: the calls may matter.
-    if (contains_call(left)) return;
+    if (contains_call(nodes, left)) return;
     bool located = false;  // %MW10 := %MW10; or x := x; with x AT %MW10
-    for_each_of_kind(left, "direct_variable", [&](SyntaxNode) { located = true; });
+    for_each_of_kind(nodes, left_index, "direct_variable", [&](uint32_t) { located = true; });
     if (const check::Symbol* scope = check::query::scope_at(context.model(), context.source_id(), statement.begin())) {
       std::vector<Diagnostic> ignored;
       check::BodyChecker checker(context.model(), *scope, ignored);
@@ -159,7 +175,8 @@ void check_self_assignment(LintContext& context) {
     // `x := x;` on an AT %... variable is sometimes there to keep the I/O mapped (a compiler may
     // drop what no code uses): report it, but leave its removal to the reader.
     std::optional<Fix> fix;
-    if (!contains_comment(statement) && !located) fix = removal_fix(context, statement, "remove the self-assignment");
+    if (!contains_comment(nodes, statement) && !located)
+      fix = removal_fix(context, statement, "remove the self-assignment");
     context.report("L035", "'" + in_message(left.text()) + "' is assigned to itself", statement.range(),
                    "this does nothing: remove it, or assign the value that was meant", std::move(fix));
   });

@@ -8,19 +8,23 @@
 namespace rung::lint::flow {
 namespace {
 
-// The tokens of `node` in text order, without comments and pragmas.
-std::vector<SyntaxNode> tokens_of(SyntaxNode node) {
-  std::vector<SyntaxNode> tokens;
-  walk_preorder(node, [&](SyntaxNode n) {
-    if (n.is_extra()) return false;
-    if (n.child_count() == 0) tokens.push_back(n);
-    return true;
-  });
-  return tokens;
+// The first token at or after `i` before `stop` (a leaf that is no comment or pragma, nor inside
+// one); `stop` when there is none.
+uint32_t next_token(const NodeList& nodes, uint32_t i, uint32_t stop) {
+  while (i < stop) {
+    if (nodes.is_extra(i)) {
+      i = nodes.subtree_end(i);
+    } else if (nodes.has_children(i)) {
+      ++i;
+    } else {
+      return i;
+    }
+  }
+  return stop;
 }
 
-bool is_string_token(SyntaxNode token) {
-  return token.kind().find("string") != std::string_view::npos;
+bool is_string_token(std::string_view kind) {
+  return kind.find("string") != std::string_view::npos;
 }
 
 bool is_blank(char c) {
@@ -29,37 +33,44 @@ bool is_blank(char c) {
 
 }  // namespace
 
-bool same_tokens(SyntaxNode a, SyntaxNode b) {
-  if (!a || !b) return false;
-  const std::vector<SyntaxNode> left = tokens_of(a);
-  const std::vector<SyntaxNode> right = tokens_of(b);
-  if (left.size() != right.size()) return false;
-  for (size_t i = 0; i < left.size(); ++i) {
-    if (left[i].kind() != right[i].kind()) return false;
-    // 'Abc' and 'ABC' are different values; every other token of ST is case-insensitive.
-    const bool equal = is_string_token(left[i]) ? left[i].text() == right[i].text()
-                                                : check::names_equal(left[i].text(), right[i].text());
-    if (!equal) return false;
-  }
-  return true;
+bool same_tokens(const NodeList& nodes, SyntaxNode a, SyntaxNode b) {
+  return same_tokens(nodes, nodes.index_of(a), nodes.index_of(b));
 }
 
-bool contains_call(SyntaxNode node) {
+bool same_tokens(const NodeList& nodes, uint32_t left, uint32_t right) {
+  if (left == NodeList::kNone || right == NodeList::kNone) return false;
+  const uint32_t left_end = nodes.subtree_end(left);
+  const uint32_t right_end = nodes.subtree_end(right);
+  uint32_t x = next_token(nodes, left, left_end);
+  uint32_t y = next_token(nodes, right, right_end);
+  for (; x < left_end && y < right_end;
+       x = next_token(nodes, x + 1, left_end), y = next_token(nodes, y + 1, right_end)) {
+    const std::string_view kind = nodes.kind(x);
+    if (kind != nodes.kind(y)) return false;
+    // 'Abc' and 'ABC' are different values; every other token of ST is case-insensitive.
+    const bool equal =
+        is_string_token(kind) ? nodes.text(x) == nodes.text(y) : check::names_equal(nodes.text(x), nodes.text(y));
+    if (!equal) return false;
+  }
+  return x == left_end && y == right_end;
+}
+
+bool contains_call(const NodeList& nodes, SyntaxNode node) {
   bool found = false;
-  walk_preorder(node, [&](SyntaxNode n) {
-    if (found || n.is_extra()) return false;
-    if (n.kind() == "call_expression") found = true;
+  nodes.walk(nodes.index_of(node), [&](uint32_t i) {
+    if (found || nodes.is_extra(i)) return false;
+    if (nodes.kind(i) == "call_expression") found = true;
     return !found;
   });
   return found;
 }
 
-bool contains_comment(SyntaxNode node) {
+bool contains_comment(const NodeList& nodes, SyntaxNode node) {
   bool found = false;
-  walk_preorder(node, [&](SyntaxNode n) {
+  nodes.walk(nodes.index_of(node), [&](uint32_t i) {
     if (found) return false;
-    if (n.is_extra()) {
-      found = n.kind() == "comment";
+    if (nodes.is_extra(i)) {
+      found = nodes.kind(i) == "comment";
       return false;
     }
     return true;
@@ -103,60 +114,72 @@ std::string in_message(std::string_view code) {
   return out;
 }
 
-std::vector<Branch> branches_of(SyntaxNode node) {
+std::vector<Branch> branches_of(const NodeList& nodes, SyntaxNode node) {
+  static const TSFieldId kCondition = NodeList::field_id("condition");
+  static const TSFieldId kBody = NodeList::field_id("body");
+  static const TSFieldId kLabel = NodeList::field_id("label");
   std::vector<Branch> branches;
-  const bool is_if = node.kind() == "if_statement";
-  for (SyntaxNode child : node.named_children()) {
-    const std::string_view kind = child.kind();
-    if (is_if && kind == "statement_list") {
-      // The THEN branch: its head is IF ... THEN, which ends where the condition ends.
-      continue;
+  const uint32_t statement = nodes.index_of(node);
+  if (statement == NodeList::kNone) return branches;
+  const bool is_if = nodes.kind(statement) == "if_statement";
+  nodes.for_each_child(statement, [&](uint32_t child) {
+    if (!nodes.is_named(child)) return;
+    // The THEN branch is the if_statement's own statement_list: its head is IF ... THEN.
+    const std::string_view kind = nodes.kind(child);
+    if (kind != "elsif_clause" && kind != "else_clause" && kind != "case_element") return;
+    Branch branch;
+    branch.kind = kind == "elsif_clause"  ? Branch::Kind::Elsif
+                  : kind == "else_clause" ? Branch::Kind::Else
+                                          : Branch::Kind::Case;
+    const uint32_t condition = nodes.child_by_field(child, kCondition);
+    branch.condition = nodes.node(condition);
+    branch.body = nodes.node(nodes.child_by_field(child, kBody));
+    uint32_t head_end = nodes.begin(child) + (kind == "else_clause" ? 4 : 0);
+    if (condition != NodeList::kNone) head_end = nodes.end(condition);
+    if (kind == "case_element") {
+      nodes.for_each_child(child, [&](uint32_t label) {
+        if (nodes.field(label) == kLabel && kLabel != 0) head_end = nodes.end(label);
+      });
     }
-    if (kind == "elsif_clause" || kind == "else_clause" || kind == "case_element") {
-      Branch branch;
-      branch.kind = kind == "elsif_clause"  ? Branch::Kind::Elsif
-                    : kind == "else_clause" ? Branch::Kind::Else
-                                            : Branch::Kind::Case;
-      branch.condition = child.child_by_field("condition");
-      branch.body = child.child_by_field("body");
-      uint32_t head_end = child.begin() + (kind == "else_clause" ? 4 : 0);
-      if (branch.condition) head_end = branch.condition.end();
-      if (kind == "case_element") {
-        for (SyntaxNode label : child.children_by_field("label")) head_end = label.end();
-      }
-      branch.head = {child.begin(), head_end};
-      branch.span = {child.begin(), child.end()};
-      branches.push_back(branch);
-    }
-  }
+    branch.head = {nodes.begin(child), head_end};
+    branch.span = nodes.range(child);
+    branches.push_back(branch);
+  });
   if (is_if) {
     Branch then_branch;
-    then_branch.condition = node.child_by_field("condition");
-    then_branch.body = node.child_by_field("body");
-    then_branch.head = {node.begin(), then_branch.condition ? then_branch.condition.end() : node.begin() + 2};
-    then_branch.span = {then_branch.head.end, node.end()};
+    const uint32_t condition = nodes.child_by_field(statement, kCondition);
+    then_branch.condition = nodes.node(condition);
+    then_branch.body = nodes.node(nodes.child_by_field(statement, kBody));
+    then_branch.head = {nodes.begin(statement),
+                        condition != NodeList::kNone ? nodes.end(condition) : nodes.begin(statement) + 2};
+    then_branch.span = {then_branch.head.end, nodes.end(statement)};
     branches.insert(branches.begin(), then_branch);
   }
   // A branch reaches to the next one: comments between them belong to it.
   for (size_t i = 0; i + 1 < branches.size(); ++i) branches[i].span.end = branches[i + 1].span.begin;
-  if (!branches.empty()) branches.back().span.end = node.end();
+  if (!branches.empty()) branches.back().span.end = nodes.end(statement);
   return branches;
 }
 
-bool is_empty_body(SyntaxNode body) {
-  if (!body) return true;
-  for (SyntaxNode statement : body.named_children()) {
-    if (!statement.is_extra() && statement.kind() != "empty_statement") return false;
-  }
-  return true;
+bool is_empty_body(const NodeList& nodes, SyntaxNode body) {
+  const uint32_t list = nodes.index_of(body);
+  if (list == NodeList::kNone) return true;
+  bool empty = true;
+  nodes.for_each_child(list, [&](uint32_t statement) {
+    if (nodes.is_named(statement) && !nodes.is_extra(statement) && nodes.kind(statement) != "empty_statement") {
+      empty = false;
+    }
+  });
+  return empty;
 }
 
-bool has_comment_in(SyntaxNode scope, TextRange span) {
+bool has_comment_in(const NodeList& nodes, SyntaxNode scope, TextRange span) {
   bool found = false;
-  walk_preorder(scope, [&](SyntaxNode node) {
-    if (found || node.end() <= span.begin || node.begin() >= span.end) return false;
-    if (node.is_extra()) {
-      found = node.kind() == "comment" || node.kind() == "pragma";
+  nodes.walk(nodes.index_of(scope), [&](uint32_t i) {
+    if (found || nodes.end(i) <= span.begin || nodes.begin(i) >= span.end) return false;
+    if (nodes.is_extra(i)) {
+      const std::string_view kind = nodes.kind(i);
+      found = kind == "comment" || kind == "pragma";
       return false;
     }
     return true;

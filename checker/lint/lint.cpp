@@ -35,27 +35,42 @@ std::optional<Severity> rule_severity(const Rule& rule, const project::LintSetti
   return level;
 }
 
-FileFindings lint_source(const check::Workspace& workspace, check::SourceId id, const project::LintSettings& settings,
-                         AnalysisCache* cache) {
-  AnalysisCache own_cache;
-  AnalysisCache& shared = cache ? *cache : own_cache;
+namespace {
+
+// A rule that runs, with the severity rung.toml gives it.
+struct EnabledRule {
+  const Rule* rule = nullptr;
+  Severity severity = Severity::Warning;
+};
+
+std::vector<EnabledRule> enabled_rules(const project::LintSettings& settings) {
+  std::vector<EnabledRule> enabled;
+  for (const Rule& rule : all_rules()) {
+    const std::optional<Severity> severity = rule_severity(rule, settings);
+    if (severity && rule.check) enabled.push_back({&rule, *severity});
+  }
+  return enabled;
+}
+
+FileFindings lint_with(const check::Workspace& workspace, check::SourceId id, const project::LintSettings& settings,
+                       const std::vector<EnabledRule>& rules, AnalysisCache& shared) {
   const check::ProjectModel& model = workspace.model();
   const check::Source& source = model.source(id);
   FileFindings result;
   result.source = id;
   result.path = source.document->path();
   if (!source.document->tree()) return result;
-  for (const Rule& rule : all_rules()) {
-    const std::optional<Severity> severity = rule_severity(rule, settings);
-    if (!severity || !rule.check) continue;
+  FileShared file;  // the node list and POUs every rule of this file reads
+  for (const EnabledRule& enabled : rules) {
     std::vector<Finding> found;
-    LintContext context(model, id, settings, found, &shared);
-    rule.check(context);
+    LintContext context(model, id, settings, found, &shared, &file);
+    enabled.rule->check(context);
     for (Finding& finding : found) {
-      finding.diagnostic.severity = *severity;
+      finding.diagnostic.severity = enabled.severity;
       result.findings.push_back(std::move(finding));
     }
   }
+  shared.release_nodes(id);  // other files' analyses rarely need this file's nodes again
   // Suppression comments speak in tree coordinates, like the rules.
   const std::vector<Suppression> suppressions = read_suppressions(source.document->tree()->root());
   if (!suppressions.empty()) {
@@ -84,6 +99,14 @@ FileFindings lint_source(const check::Workspace& workspace, check::SourceId id, 
   return result;
 }
 
+}  // namespace
+
+FileFindings lint_source(const check::Workspace& workspace, check::SourceId id, const project::LintSettings& settings,
+                         AnalysisCache* cache) {
+  AnalysisCache own_cache;
+  return lint_with(workspace, id, settings, enabled_rules(settings), cache ? *cache : own_cache);
+}
+
 std::vector<FileFindings> lint_all(const check::Workspace& workspace, const project::LintSettings& settings,
                                    unsigned threads) {
   std::vector<check::SourceId> ids;
@@ -97,7 +120,9 @@ std::vector<FileFindings> lint_sources(const check::Workspace& workspace, const 
                                        const project::LintSettings& settings, unsigned threads) {
   std::vector<FileFindings> results(ids.size());
   AnalysisCache cache;  // one project-wide analysis serves every file
-  parallel_for(ids.size(), threads, [&](size_t i) { results[i] = lint_source(workspace, ids[i], settings, &cache); });
+  const std::vector<EnabledRule> rules = enabled_rules(settings);
+  parallel_for(ids.size(), threads,
+               [&](size_t i) { results[i] = lint_with(workspace, ids[i], settings, rules, cache); });
   return results;
 }
 

@@ -13,9 +13,49 @@ std::string_view LintContext::text() const {
   return tree ? std::string_view(tree->text()) : std::string_view();
 }
 
+FileShared& LintContext::file() const {
+  if (file_) return *file_;
+  if (!own_file_) own_file_ = std::make_unique<FileShared>();
+  return *own_file_;
+}
+
+const NodeList& LintContext::nodes() const {
+  std::shared_ptr<const NodeList>& nodes = file().nodes;
+  if (!nodes) nodes = cache().nodes(model_, source_);
+  return *nodes;
+}
+
 const std::vector<const check::Symbol*>& LintContext::pous() const {
-  if (!pous_) pous_ = check::pous_of(source().symbols);
-  return *pous_;
+  std::optional<std::vector<const check::Symbol*>>& pous = file().pous;
+  if (!pous) pous = check::pous_of(source().symbols);
+  return *pous;
+}
+
+std::shared_ptr<const NodeList> AnalysisCache::nodes(const check::ProjectModel& model, check::SourceId source) {
+  std::shared_ptr<NodesSlot> slot;
+  {
+    std::lock_guard lock(mutex_);
+    if (released_.contains(source)) {
+      // The file's own lint is over: build the list for this one question and do not keep it.
+      slot = std::make_shared<NodesSlot>();
+    } else {
+      std::shared_ptr<NodesSlot>& entry = nodes_[source];
+      if (!entry) entry = std::make_shared<NodesSlot>();
+      slot = entry;
+    }
+  }
+  // Built outside the lock: other threads go on with other files meanwhile.
+  std::call_once(slot->once, [&] {
+    const SyntaxTree* tree = model.source(source).document->tree();
+    slot->list = std::make_shared<const NodeList>(tree ? tree->root() : SyntaxNode());
+  });
+  return slot->list;
+}
+
+void AnalysisCache::release_nodes(check::SourceId source) {
+  std::lock_guard lock(mutex_);
+  nodes_.erase(source);
+  released_.insert(source);
 }
 
 AnalysisCache& LintContext::cache() const {

@@ -10,10 +10,13 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <typeindex>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
+#include "checker/lint/node_list.hpp"
 #include "checker/project/lint_settings.hpp"
 #include "checker/project_model.hpp"
 #include "parser/diagnostic.hpp"
@@ -46,17 +49,45 @@ struct Finding {
 // it never sees an edited model.
 class AnalysisCache {
  public:
+  // The analysis of type T; T is default-constructed, or constructed with this cache if it can be
+  // (to ask for node lists). Its constructor must not call get().
   template <typename T>
   T& get() {
     std::lock_guard lock(mutex_);
     std::shared_ptr<void>& slot = entries_[std::type_index(typeid(T))];
-    if (!slot) slot = std::make_shared<T>();
+    if (!slot) {
+      if constexpr (std::is_constructible_v<T, AnalysisCache&>) {
+        slot = std::make_shared<T>(*this);
+      } else {
+        slot = std::make_shared<T>();
+      }
+    }
     return *static_cast<T*>(slot.get());
   }
 
+  // The node list of a file, built once for the file's own rules and the project-wide analyses
+  // that read the file (whichever asks first), until release_nodes().
+  std::shared_ptr<const NodeList> nodes(const check::ProjectModel& model, check::SourceId source);
+  // Forgets the file's list (its lint is done): a later question builds a list of its own.
+  void release_nodes(check::SourceId source);
+
  private:
+  struct NodesSlot {
+    std::once_flag once;
+    std::shared_ptr<const NodeList> list;
+  };
+
   std::mutex mutex_;
   std::unordered_map<std::type_index, std::shared_ptr<void>> entries_;
+  std::unordered_map<check::SourceId, std::shared_ptr<NodesSlot>> nodes_;
+  std::unordered_set<check::SourceId> released_;
+};
+
+// What the rules of one file share, built by the first rule that asks: lint_source() keeps one
+// per file for all its rules.
+struct FileShared {
+  std::shared_ptr<const NodeList> nodes;
+  std::optional<std::vector<const check::Symbol*>> pous;
 };
 
 class LintContext;
@@ -74,8 +105,8 @@ struct Rule {
 class LintContext {
  public:
   LintContext(const check::ProjectModel& model, check::SourceId source, const project::LintSettings& settings,
-              std::vector<Finding>& out, AnalysisCache* cache = nullptr)
-      : model_(model), source_(source), settings_(settings), out_(out), cache_(cache) {}
+              std::vector<Finding>& out, AnalysisCache* cache = nullptr, FileShared* file = nullptr)
+      : model_(model), source_(source), settings_(settings), out_(out), cache_(cache), file_(file) {}
 
   const check::ProjectModel& model() const { return model_; }
   check::SourceId source_id() const { return source_; }
@@ -84,6 +115,9 @@ class LintContext {
   // was not parsed.
   SyntaxNode root() const;
   std::string_view text() const;
+  // The file's tree as a flat preorder list (empty when the file was not parsed): node 0 is the
+  // root. Walking it is what rules that look at every node should do (node_list.hpp).
+  const NodeList& nodes() const;
   // The file's POUs (members after their owner), as the body checks see them.
   const std::vector<const check::Symbol*>& pous() const;
 
@@ -107,9 +141,11 @@ class LintContext {
   check::SourceId source_;
   const project::LintSettings& settings_;
   std::vector<Finding>& out_;
-  mutable std::optional<std::vector<const check::Symbol*>> pous_;
   AnalysisCache* cache_ = nullptr;
   mutable std::unique_ptr<AnalysisCache> own_cache_;
+  FileShared* file_ = nullptr;
+  mutable std::unique_ptr<FileShared> own_file_;
+  FileShared& file() const;
 };
 
 // Every rule, ordered by code.

@@ -39,11 +39,11 @@ bool same_line(std::string_view text, uint32_t a, uint32_t b) {
 }
 
 // Every comment of the file, in text order.
-std::vector<SyntaxNode> comments_of(SyntaxNode root) {
+std::vector<SyntaxNode> comments_of(const NodeList& nodes) {
   std::vector<SyntaxNode> comments;
-  walk_preorder(root, [&](SyntaxNode node) {
-    if (node.kind() == "comment") comments.push_back(node);
-    return !node.is_extra() && node.child_count() > 0;
+  nodes.walk(0, [&](uint32_t i) {
+    if (nodes.kind(i) == "comment") comments.push_back(nodes.node(i));
+    return !nodes.is_extra(i) && nodes.has_children(i);
   });
   return comments;
 }
@@ -101,7 +101,7 @@ bool has_comment_before(SyntaxNode root, const Symbol& pou) {
 // name and before the first statement, outside the VAR blocks (those describe variables). The
 // CODESYS and TwinCAT habit is the first lines after the header; OSCAT writes its description
 // after the last END_VAR.
-bool has_comment_in_header(SyntaxNode root, const Symbol& pou) {
+bool has_comment_in_header(const NodeList& nodes, SyntaxNode root, const Symbol& pou) {
   const std::string_view text = root.source();
   const SyntaxNode name = pou.node.child_by_field("name");
   const uint32_t begin = name ? name.end() : pou.node.begin();
@@ -113,14 +113,15 @@ bool has_comment_in_header(SyntaxNode root, const Symbol& pou) {
     }
   }
   bool found = false;
-  walk_preorder(pou.node, [&](SyntaxNode node) {
-    if (found || node.begin() >= end || node.end() <= begin) return false;
-    if (node.kind() == "var_block") return false;
-    if (node.kind() == "comment") {
-      found = starts_line(text, node.begin()) || (name && same_line(text, name.end(), node.begin()));
+  nodes.walk(nodes.index_of(pou.node), [&](uint32_t i) {
+    if (found || nodes.begin(i) >= end || nodes.end(i) <= begin) return false;
+    const std::string_view kind = nodes.kind(i);
+    if (kind == "var_block") return false;
+    if (kind == "comment") {
+      found = starts_line(text, nodes.begin(i)) || (name && same_line(text, name.end(), nodes.begin(i)));
       return false;
     }
-    return !node.is_extra();
+    return !nodes.is_extra(i);
   });
   return found;
 }
@@ -132,7 +133,7 @@ void check_pou_comment(LintContext& context) {
   if (!root) return;
   for (const Symbol* pou : context.pous()) {
     if (!wants_comment(context.model(), *pou)) continue;
-    if (has_comment_before(root, *pou) || has_comment_in_header(root, *pou)) continue;
+    if (has_comment_before(root, *pou) || has_comment_in_header(context.nodes(), root, *pou)) continue;
     context.report("L060", fmt::format("{} has no comment that says what it does", pou_label(*pou)), pou->name_range,
                    "write what it does (and what its inputs and outputs mean) in a comment right before it or on "
                    "the lines after its header");
@@ -148,6 +149,10 @@ constexpr std::array<std::string_view, 4> kTodoWords = {"TODO", "FIXME", "XXX", 
 // The first TODO word of the comment as a whole word, as (offset in `comment`, length).
 std::optional<std::pair<size_t, size_t>> todo_word(std::string_view comment) {
   for (size_t at = 0; at < comment.size(); ++at) {
+    const char first = check::ascii_upper(comment[at]);
+    if (std::none_of(kTodoWords.begin(), kTodoWords.end(), [&](std::string_view word) { return word[0] == first; })) {
+      continue;  // the cheap test first: comments are long, TODO words rare
+    }
     if (at > 0 && is_word_char(comment[at - 1])) continue;
     for (std::string_view word : kTodoWords) {
       if (at + word.size() > comment.size() || !check::names_equal(comment.substr(at, word.size()), word)) continue;
@@ -170,7 +175,7 @@ std::string note_text(std::string_view rest) {
 void check_todo_comment(LintContext& context) {
   const SyntaxNode root = context.root();
   if (!root) return;
-  for (SyntaxNode comment : comments_of(root)) {
+  for (SyntaxNode comment : comments_of(context.nodes())) {
     const std::string_view text = comment.text();
     const auto word = todo_word(text);
     if (!word) continue;
@@ -292,7 +297,7 @@ void check_commented_code(LintContext& context) {
   const SyntaxNode root = context.root();
   if (!root) return;
   const std::string_view text = context.text();
-  for (const std::vector<SyntaxNode>& run : comment_runs(text, comments_of(root))) {
+  for (const std::vector<SyntaxNode>& run : comment_runs(text, comments_of(context.nodes()))) {
     std::string content;
     for (SyntaxNode comment : run) {
       if (!content.empty()) content += '\n';

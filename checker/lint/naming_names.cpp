@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <map>
+#include <mutex>
 #include <set>
 #include <tuple>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "checker/lint/naming_rules.hpp"
@@ -17,16 +19,19 @@ namespace {
 
 using check::Symbol;
 
-// Upper-case names of the FOR loop counters in the POU's own body.
-std::set<std::string> for_counters(const Symbol& pou) {
+// Upper-case names of the FOR loop counters in the POU's own body (`nodes`: its file's nodes).
+std::set<std::string> for_counters(const NodeList& nodes, const Symbol& pou) {
+  static const TSFieldId kVariable = NodeList::field_id("variable");
   std::set<std::string> counters;
   for (SyntaxNode body : bodies_of(pou)) {
-    walk_preorder(body, [&](SyntaxNode node) {
-      if (node.is_extra()) return false;
-      if (node.kind() == "for_statement") {
-        if (SyntaxNode variable = node.child_by_field("variable")) counters.insert(check::upper_name(variable.text()));
+    nodes.walk(nodes.index_of(body), [&](uint32_t i) {
+      if (nodes.is_extra(i)) return false;
+      if (nodes.kind(i) == "for_statement") {
+        if (const uint32_t variable = nodes.child_by_field(i, kVariable); variable != NodeList::kNone) {
+          counters.insert(check::upper_name(nodes.text(variable)));
+        }
       }
-      return node.child_count() > 0;
+      return nodes.has_children(i);
     });
   }
   return counters;
@@ -62,7 +67,7 @@ bool LoopCounters::contains(const Symbol& variable) {
   const Symbol* owner = variable.owner;
   if (!owner || !check::is_pou_kind(owner->kind)) return false;
   auto found = by_pou_.find(owner);
-  if (found == by_pou_.end()) found = by_pou_.emplace(owner, for_counters(*owner)).first;
+  if (found == by_pou_.end()) found = by_pou_.emplace(owner, for_counters(nodes_, *owner)).first;
   return found->second.count(check::upper_name(variable.name)) > 0;
 }
 
@@ -80,7 +85,7 @@ void check_name_too_short(LintContext& context) {
     context.report("L005", fmt::format("{} '{}' is shorter than {} characters", what, name, minimum), range, help);
   };
 
-  LoopCounters counters;
+  LoopCounters counters(context.nodes());
   for (const Symbol* variable : named_variables(context)) {
     if (!too_short(variable->name) || is_counter_name(variable->name) || counters.contains(*variable)) continue;
     if (is_parameter(*variable) && is_standard_parameter_name(variable->name)) continue;
@@ -100,6 +105,42 @@ void check_name_too_short(LintContext& context) {
 }
 
 namespace {
+
+// How the project's own declarations (not library stubs) spell each name, built once per lint run
+// (AnalysisCache): L006 reports a name written with other upper/lower case than the project
+// declaration it resolves to, so a name that no project declaration spells otherwise needs no
+// resolving.
+class DeclaredSpellings {
+ public:
+  const DeclaredSpellings& of(const check::ProjectModel& model) {
+    std::call_once(once_, [&] {
+      for (check::SourceId id = 0; id < model.source_count(); ++id) {
+        const check::Source& source = model.source(id);
+        if (source.library) continue;
+        for (const Symbol& symbol : source.symbols.storage) {
+          if (symbol.name.empty()) continue;
+          auto [entry, added] = spellings_.try_emplace(symbol.name, Spelling{symbol.name});
+          if (!added && entry->second.first != symbol.name) entry->second.several = true;
+        }
+      }
+    });
+    return *this;
+  }
+
+  // Whether some project declaration spells `written` with other upper/lower case.
+  bool may_differ(std::string_view written) const {
+    auto found = spellings_.find(written);
+    return found != spellings_.end() && (found->second.several || found->second.first != written);
+  }
+
+ private:
+  struct Spelling {
+    std::string_view first;
+    bool several = false;  // declarations spell it in more than one way
+  };
+  std::once_flag once_;
+  std::unordered_map<std::string_view, Spelling, check::NameHash, check::NameEqual> spellings_;
+};
 
 // What a name resolves to depends on its scope, how it is used, and the expression around it
 // (obj.name, E#name): resolutions are cached under all three, so each distinct name of a POU is
@@ -150,20 +191,25 @@ class ScopeTracker {
 }  // namespace
 
 void check_name_case(LintContext& context) {
-  const SyntaxNode root = context.root();
-  if (!root) return;
+  const NodeList& nodes = context.nodes();
+  if (nodes.empty()) return;
   const check::ProjectModel& model = context.model();
   const check::SourceId id = context.source_id();
+  // Only a name that some project declaration spells otherwise can be reported: the others are
+  // passed over without resolving them.
+  const DeclaredSpellings& spellings = context.cache().get<DeclaredSpellings>().of(model);
   // Declaring name tokens are where the spelling comes from; they are skipped without asking.
   std::unordered_set<uint32_t> declarations;
   for (const Symbol& symbol : context.source().symbols.storage) declarations.insert(symbol.name_range.begin);
 
   std::map<ResolutionKey, const Symbol*> resolved;
   ScopeTracker scopes(context.source().symbols);
-  walk_preorder(root, [&](SyntaxNode node) {
-    if (node.is_extra()) return false;
-    if (node.kind() != "identifier") return node.child_count() > 0;
-    if (declarations.count(node.begin()) || node.is_missing()) return false;
+  nodes.walk(0, [&](uint32_t i) {
+    if (nodes.is_extra(i)) return false;
+    if (nodes.kind(i) != "identifier") return nodes.has_children(i);
+    if (!spellings.may_differ(nodes.text(i))) return false;
+    if (declarations.count(nodes.begin(i)) || nodes.is_missing(i)) return false;
+    const SyntaxNode node = nodes.node(i);
     const Symbol* scope = scopes.at(node.begin());
     const check::query::NameSite site = check::query::name_site(model, id, node);
     if (site.use == check::query::NameUse::Declaration || site.use == check::query::NameUse::Other) return false;

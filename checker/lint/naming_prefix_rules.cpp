@@ -203,7 +203,7 @@ bool is_capitals_constant(const Symbol& variable) {
 }  // namespace
 
 void check_variable_prefix(LintContext& context) {
-  LoopCounters counters;
+  LoopCounters counters(context.nodes());
   for (const Symbol* variable : named_variables(context)) {
     if (is_capitals_constant(*variable) || counters.contains(*variable)) continue;
     const Type* type = context.model().type_of(variable);

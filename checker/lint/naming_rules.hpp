@@ -18,9 +18,12 @@ std::vector<const check::Symbol*> named_variables(const LintContext& context);
 // counters are short and unprefixed by tradition (naming_names.cpp). Remembers each POU's loops.
 class LoopCounters {
  public:
+  // `nodes`: the node list of the file whose variables are asked about.
+  explicit LoopCounters(const NodeList& nodes) : nodes_(nodes) {}
   bool contains(const check::Symbol& variable);
 
  private:
+  const NodeList& nodes_;
   std::map<const check::Symbol*, std::set<std::string>> by_pou_;
 };
 

@@ -73,24 +73,27 @@ std::optional<bool> over_range(std::string_view op, __int128 lower, __int128 upp
 
 class ConditionCheck {
  public:
-  ConditionCheck(LintContext& context, const Symbol& pou) : context_(context), typer_(context.model(), pou) {}
+  ConditionCheck(LintContext& context, const Symbol& pou)
+      : context_(context), nodes_(context.nodes()), typer_(context.model(), pou) {}
 
   void run() {
-    walk_bodies(typer_.pou(), [&](SyntaxNode node) {
-      const std::string_view kind = node.kind();
-      if (kind == "if_statement") condition(node.child_by_field("condition"), "IF");
-      if (kind == "elsif_clause") condition(node.child_by_field("condition"), "ELSIF");
+    static const TSFieldId kCondition = NodeList::field_id("condition");
+    static const TSFieldId kValue = NodeList::field_id("value");
+    walk_bodies(nodes_, typer_.pou(), [&](uint32_t i) {
+      const std::string_view kind = nodes_.kind(i);
+      if (kind == "if_statement") condition(nodes_.node(nodes_.child_by_field(i, kCondition)), "IF");
+      if (kind == "elsif_clause") condition(nodes_.node(nodes_.child_by_field(i, kCondition)), "ELSIF");
       if (kind == "while_statement") {
-        const SyntaxNode test = node.child_by_field("condition");
+        const SyntaxNode test = nodes_.node(nodes_.child_by_field(i, kCondition));
         if (!(test && test.kind() == "boolean_literal" && check::names_equal(test.text(), "TRUE"))) {
           condition(test, "WHILE");
         }
       }
       if (kind == "repeat_statement") {
-        const SyntaxNode test = node.child_by_field("condition");
+        const SyntaxNode test = nodes_.node(nodes_.child_by_field(i, kCondition));
         if (!(test && test.kind() == "boolean_literal")) condition(test, "UNTIL");
       }
-      if (kind == "case_statement") selector(node.child_by_field("value"));
+      if (kind == "case_statement") selector(nodes_.node(nodes_.child_by_field(i, kValue)));
       return true;
     });
   }
@@ -167,14 +170,23 @@ class ConditionCheck {
   }
 
   // Two operands that are the same code and read the same value twice (no call in between).
-  static bool same_value(SyntaxNode a, SyntaxNode b) {
-    return flow::same_tokens(without_parentheses(a), without_parentheses(b)) && !flow::contains_call(a);
+  bool same_value(SyntaxNode a, SyntaxNode b) const {
+    return flow::same_tokens(nodes_, without_parentheses(a), without_parentheses(b)) && !flow::contains_call(nodes_, a);
   }
 
   std::optional<Verdict> logical(SyntaxNode node, std::string_view op) {
     const SyntaxNode left = node.child_by_field("left");
     const SyntaxNode right = node.child_by_field("right");
-    if (!left || !right || !is_bool(left) || !is_bool(right)) return std::nullopt;
+    if (!left || !right) return std::nullopt;
+    // Only on BOOL operands is the pattern a constant (AND and OR of WORDs work bit by bit). The
+    // pattern is read first: typing the operands is the expensive part.
+    std::optional<Verdict> verdict = logical_pattern(left, right, op);
+    if (!verdict || !is_bool(left) || !is_bool(right)) return std::nullopt;
+    return verdict;
+  }
+
+  // What `left op right` always is by its shape alone, if anything.
+  std::optional<Verdict> logical_pattern(SyntaxNode left, SyntaxNode right, std::string_view op) {
     const bool is_and = op == "AND" || op == "&" || op == "AND_THEN";
     const bool is_or = op == "OR" || op == "OR_ELSE";
     auto negation_of = [&](SyntaxNode maybe_not, SyntaxNode other) {
@@ -230,6 +242,7 @@ class ConditionCheck {
   }
 
   LintContext& context_;
+  const NodeList& nodes_;
   ExpressionTyper typer_;
 };
 

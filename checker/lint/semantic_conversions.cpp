@@ -36,12 +36,13 @@ class ConversionFinder {
   ConversionFinder(LintContext& context, const Symbol& pou) : context_(context), typer_(context.model(), pou) {}
 
   void run() {
-    walk_bodies(typer_.pou(), [&](SyntaxNode node) {
-      const std::string_view kind = node.kind();
-      if (kind == "assignment_statement" || kind == "assignment_expression") check_assignment(node);
-      if (kind == "for_statement") check_for(node);
-      if (kind == "call_expression") check_call(node);
-      if (kind == "binary_expression") check_operator(node);
+    const NodeList& nodes = context_.nodes();
+    walk_bodies(nodes, typer_.pou(), [&](uint32_t i) {
+      const std::string_view kind = nodes.kind(i);
+      if (kind == "assignment_statement" || kind == "assignment_expression") check_assignment(nodes.node(i));
+      if (kind == "for_statement") check_for(nodes.node(i));
+      if (kind == "call_expression") check_call(nodes.node(i));
+      if (kind == "binary_expression") check_operator(nodes.node(i));
       return true;
     });
   }

@@ -90,8 +90,9 @@ void check_case(LintContext& context, ExpressionTyper& typer, SyntaxNode stateme
 void check_enum_case(LintContext& context) {
   for (const Symbol* pou : context.pous()) {
     ExpressionTyper typer(context.model(), *pou);
-    walk_bodies(*pou, [&](SyntaxNode node) {
-      if (node.kind() == "case_statement") check_case(context, typer, node);
+    const NodeList& nodes = context.nodes();
+    walk_bodies(nodes, *pou, [&](uint32_t i) {
+      if (nodes.kind(i) == "case_statement") check_case(context, typer, nodes.node(i));
       return true;
     });
   }

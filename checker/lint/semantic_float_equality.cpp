@@ -38,28 +38,34 @@ void report(LintContext& context, SyntaxNode where, std::string_view type_name, 
 }
 
 void check_pou(LintContext& context, const check::Symbol& pou) {
+  static const TSFieldId kFunction = NodeList::field_id("function");
+  static const TSFieldId kLeft = NodeList::field_id("left");
+  static const TSFieldId kRight = NodeList::field_id("right");
   ExpressionTyper typer(context.model(), pou);
-  walk_bodies(pou, [&](SyntaxNode node) {
-    const std::string_view kind = node.kind();
+  const NodeList& nodes = context.nodes();
+  walk_bodies(nodes, pou, [&](uint32_t i) {
+    const std::string_view kind = nodes.kind(i);
     if (kind == "binary_expression") {
-      const std::string op = ast::operator_of(node);
+      const std::string_view op = operator_text(nodes, i);
       if (op != "=" && op != "<>") return true;
-      const SyntaxNode left = node.child_by_field("left");
-      const SyntaxNode right = node.child_by_field("right");
+      const SyntaxNode left = nodes.node(nodes.child_by_field(i, kLeft));
+      const SyntaxNode right = nodes.node(nodes.child_by_field(i, kRight));
       auto a = typer.type_of(left);
       auto b = typer.type_of(right);
       if (!a || !b || !(is_runtime_real(*a) || is_runtime_real(*b))) return true;
-      report(context, node, real_name(*a, *b), left.text(), right.text(), op == "=");
+      report(context, nodes.node(i), real_name(*a, *b), left.text(), right.text(), op == "=");
       return true;
     }
     if (kind == "call_expression") {
       // EQ(a, b) and NE(a, b), the standard functions of '=' and '<>'.
-      const SyntaxNode function = node.child_by_field("function");
-      if (!function || function.kind() != "identifier") return true;
-      const bool equal = check::names_equal(function.text(), "EQ");
-      if (!equal && !check::names_equal(function.text(), "NE")) return true;
-      const check::Symbol* callee = context.model().lookup(&pou, function.text());
+      const uint32_t function = nodes.child_by_field(i, kFunction);
+      if (function == NodeList::kNone || nodes.kind(function) != "identifier") return true;
+      const std::string_view name = nodes.text(function);
+      const bool equal = check::names_equal(name, "EQ");
+      if (!equal && !check::names_equal(name, "NE")) return true;
+      const check::Symbol* callee = context.model().lookup(&pou, name);
       if (!callee || !callee->has(check::kLibrary)) return true;  // a project's own EQ is something else
+      const SyntaxNode node = nodes.node(i);
       const std::vector<check::CallArgument> arguments = check::call_arguments(node.child_by_field("arguments"));
       if (arguments.size() != 2 || arguments[0].output || arguments[1].output) return true;
       auto a = typer.type_of(arguments[0].value);

@@ -190,8 +190,12 @@ void check_list(LintContext& context, ExpressionTyper& typer, SyntaxNode list) {
 void check_loop_variable_after(LintContext& context) {
   for (const Symbol* pou : context.pous()) {
     ExpressionTyper typer(context.model(), *pou);
-    walk_bodies(*pou, [&](SyntaxNode node) {
-      if (node.kind() == "statement_list") check_list(context, typer, node);
+    const NodeList& nodes = context.nodes();
+    walk_bodies(nodes, *pou, [&](uint32_t i) {
+      // Only a list with a FOR loop in it has a counter to read after the loop.
+      if (nodes.kind(i) == "statement_list" && nodes.first_child_of_kind(i, "for_statement") != NodeList::kNone) {
+        check_list(context, typer, nodes.node(i));
+      }
       return true;
     });
   }

@@ -20,8 +20,9 @@ namespace {
 using check::ExprInfo;
 using check::Symbol;
 
+// `op` as written: MOD in any case.
 bool is_arithmetic(std::string_view op) {
-  return op == "+" || op == "-" || op == "*" || op == "/" || op == "MOD";
+  return op == "+" || op == "-" || op == "*" || op == "/" || check::names_equal(op, "MOD");
 }
 
 // A library function (or builtin) of this name, not a project POU that happens to share it.
@@ -53,31 +54,43 @@ bool holds_address(ExpressionTyper& typer, SyntaxNode operand) {
 
 class PointerArithmetic {
  public:
-  PointerArithmetic(LintContext& context, const Symbol& pou) : context_(context), typer_(context.model(), pou) {}
+  PointerArithmetic(LintContext& context, const Symbol& pou)
+      : context_(context), nodes_(context.nodes()), typer_(context.model(), pou) {}
 
   void run() {
-    walk_bodies(typer_.pou(), [&](SyntaxNode node) {
-      const std::string_view kind = node.kind();
-      if (kind == "binary_expression") return !check_binary(node);
-      if (kind == "call_expression") return !check_call(node);
-      if (kind == "assignment_statement") check_assignment(node);
+    walk_bodies(nodes_, typer_.pou(), [&](uint32_t i) {
+      const std::string_view kind = nodes_.kind(i);
+      if (kind == "binary_expression") return !check_binary(i);
+      if (kind == "call_expression") return !check_call(i);
+      if (kind == "assignment_statement") check_assignment(i);
       return true;
     });
   }
 
  private:
-  // Returns whether it reported (then the parts inside are not looked at again).
-  bool check_binary(SyntaxNode node) {
-    if (reported_.contains(node.begin())) return true;  // reported as the value of a pointer assignment
-    if (!is_arithmetic(ast::operator_of(node))) return false;
-    if (!holds_address(typer_, node.child_by_field("left")) && !holds_address(typer_, node.child_by_field("right"))) {
+  // Returns whether node `i` was reported (then the parts inside are not looked at again).
+  bool check_binary(uint32_t i) {
+    static const TSFieldId kLeft = NodeList::field_id("left");
+    static const TSFieldId kRight = NodeList::field_id("right");
+    if (reported_.contains(nodes_.begin(i))) return true;  // reported as the value of a pointer assignment
+    if (!is_arithmetic(operator_text(nodes_, i))) return false;
+    if (!holds_address(typer_, nodes_.node(nodes_.child_by_field(i, kLeft))) &&
+        !holds_address(typer_, nodes_.node(nodes_.child_by_field(i, kRight)))) {
       return false;
     }
-    report(node);
+    report(nodes_.node(i));
     return true;
   }
 
-  bool check_call(SyntaxNode node) {
+  bool check_call(uint32_t i) {
+    static const TSFieldId kFunction = NodeList::field_id("function");
+    // ADD and SUB only: the other calls are not looked at any further.
+    const uint32_t function = nodes_.child_by_field(i, kFunction);
+    if (function == NodeList::kNone ||
+        (!check::names_equal(nodes_.text(function), "ADD") && !check::names_equal(nodes_.text(function), "SUB"))) {
+      return false;
+    }
+    const SyntaxNode node = nodes_.node(i);
     if (!calls_standard(typer_, node, {"ADD", "SUB"})) return false;
     for (const check::CallArgument& argument : check::call_arguments(node.child_by_field("arguments"))) {
       if (!argument.output && holds_address(typer_, argument.value)) {
@@ -89,10 +102,15 @@ class PointerArithmetic {
   }
 
   // pData := dwBase + nOffset: the arithmetic computes an address even if no operand is typed as one.
-  void check_assignment(SyntaxNode node) {
-    const SyntaxNode right = without_parentheses(node.child_by_field("right"));
+  void check_assignment(uint32_t i) {
+    static const TSFieldId kLeft = NodeList::field_id("left");
+    static const TSFieldId kRight = NodeList::field_id("right");
+    const uint32_t value = nodes_.child_by_field(i, kRight);
+    if (value == NodeList::kNone) return;
+    if (nodes_.kind(value) != "binary_expression" && nodes_.kind(value) != "parenthesized_expression") return;
+    const SyntaxNode right = without_parentheses(nodes_.node(value));
     if (!right || right.kind() != "binary_expression" || !is_arithmetic(ast::operator_of(right))) return;
-    auto target = typer_.type_of(node.child_by_field("left"));
+    auto target = typer_.type_of(nodes_.node(nodes_.child_by_field(i, kLeft)));
     if (!target || !(check::underlying(target->type)->kind == check::TypeKind::Pointer || declared_pvoid(*target))) {
       return;
     }
@@ -107,6 +125,7 @@ class PointerArithmetic {
   }
 
   LintContext& context_;
+  const NodeList& nodes_;
   ExpressionTyper typer_;
   std::set<uint32_t> reported_;  // start offsets of the expressions reported
 };

@@ -21,15 +21,16 @@ std::vector<SyntaxNode> bodies_of(const check::Symbol& pou);
 // it as that member, not again inside the network.
 bool is_member_action_block(const check::Symbol& pou, SyntaxNode node);
 
-// Calls enter(node) in preorder for the nodes of `pou`'s bodies; enter returns whether to descend.
-// Comments, pragmas and member action blocks are not entered.
+// Calls enter(i) in preorder for the named nodes of `pou`'s bodies (indices into `nodes`, the node
+// list of `pou`'s file); enter returns whether to descend. Comments, pragmas and member action
+// blocks are not entered.
 template <typename Enter>
-void walk_bodies(const check::Symbol& pou, Enter&& enter) {
+void walk_bodies(const NodeList& nodes, const check::Symbol& pou, Enter&& enter) {
   for (SyntaxNode body : bodies_of(pou)) {
-    walk_preorder(body, [&](SyntaxNode node) {
-      if (node.is_extra() || !node.is_named()) return false;
-      if (node.kind() == "sfc_action_block" && is_member_action_block(pou, node)) return false;
-      return enter(node);
+    nodes.walk(nodes.index_of(body), [&](uint32_t i) {
+      if (nodes.is_extra(i) || !nodes.is_named(i)) return false;
+      if (nodes.kind(i) == "sfc_action_block" && is_member_action_block(pou, nodes.node(i))) return false;
+      return enter(i);
     });
   }
 }

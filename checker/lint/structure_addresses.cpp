@@ -27,14 +27,20 @@ void check_direct_address(LintContext& context) {
   // Every direct address has a '%': most files have none.
   if (context.text().find('%') == std::string_view::npos) return;
   const check::AddressingMode mode = context.model().profile().addressing;
+  const NodeList& nodes = context.nodes();
+  static const TSFieldId kMember = NodeList::field_id("member");
   for (const check::Symbol* pou : context.pous()) {
     for (SyntaxNode body : bodies_of(*pou)) {
-      walk_preorder(body, [&](SyntaxNode node) {
-        if (node.is_extra()) return false;
-        if (node.kind() != "direct_variable") return node.child_count() > 0;
+      nodes.walk(nodes.index_of(body), [&](uint32_t i) {
+        if (nodes.is_extra(i)) return false;
+        if (nodes.kind(i) != "direct_variable") return nodes.has_children(i);
         // x.%X3 is a bit of the variable x, not an address.
-        const SyntaxNode parent = node.parent();
-        if (parent && parent.kind() == "member_expression" && parent.child_by_field("member") == node) return false;
+        const uint32_t parent = nodes.parent(i);
+        if (parent != NodeList::kNone && nodes.kind(parent) == "member_expression" &&
+            nodes.child_by_field(parent, kMember) == i) {
+          return false;
+        }
+        const SyntaxNode node = nodes.node(i);
         const check::DirectAddressResult parsed = check::parse_direct_address(node.text(), mode);
         if (!parsed.ok() || parsed.address->wildcard) return false;  // E505 reports those
         context.report("L010", fmt::format("direct address {} in code: give it a name in a declaration", node.text()),

@@ -38,19 +38,19 @@ Fix new_line_fix(std::string_view text, SyntaxNode statement, uint32_t anchor) {
 }  // namespace
 
 void check_statements_per_line(LintContext& context) {
-  const SyntaxNode root = context.root();
-  if (!root) return;
   const std::string_view text = context.text();
-  walk_preorder(root, [&](SyntaxNode node) {
-    if (node.is_extra()) return false;
-    if (node.kind() != "statement_list") return node.child_count() > 0;
-    SyntaxNode previous;
+  const NodeList& nodes = context.nodes();
+  nodes.walk(0, [&](uint32_t i) {
+    if (nodes.is_extra(i)) return false;
+    if (nodes.kind(i) != "statement_list") return nodes.has_children(i);
+    uint32_t previous = NodeList::kNone;
     uint32_t line_first = 0;  // the first statement of the current line in this list
-    for (SyntaxNode statement : node.named_children()) {
-      if (statement.is_extra()) continue;
-      const ast::StatementKind kind = ast::statement_kind(statement);
-      if (kind == ast::StatementKind::Empty || kind == ast::StatementKind::Label) continue;
-      if (previous && on_one_line(text, previous.end(), statement.begin())) {
+    nodes.for_each_child(i, [&](uint32_t child) {
+      if (!nodes.is_named(child) || nodes.is_extra(child)) return;
+      const std::string_view kind = nodes.kind(child);
+      if (kind == "empty_statement" || kind == "label") return;  // ast::StatementKind Empty and Label
+      const SyntaxNode statement = nodes.node(child);
+      if (previous != NodeList::kNone && on_one_line(text, nodes.end(previous), statement.begin())) {
         uint32_t end = statement.end();
         if (const size_t eol = text.find('\n', statement.begin()); eol < end) end = static_cast<uint32_t>(eol);
         context.report("L024",
@@ -63,8 +63,8 @@ void check_statements_per_line(LintContext& context) {
       } else {
         line_first = statement.begin();
       }
-      previous = statement;
-    }
+      previous = child;
+    });
     return true;
   });
 }

@@ -33,32 +33,33 @@ bool is_measured(const Symbol& pou) {
 
 class NestingCheck {
  public:
-  NestingCheck(LintContext& context, int64_t limit) : context_(context), limit_(limit) {}
+  NestingCheck(LintContext& context, int64_t limit) : context_(context), nodes_(context.nodes()), limit_(limit) {}
 
-  // Visits the statements below `node` at nesting `depth`; a control statement deeper than the
-  // limit is reported and not entered, so a deep chain gives one finding.
-  void visit(SyntaxNode node, int64_t depth) {
-    if (depth > kMaxDepth) return;  // broken code nested absurdly deep
-    for (SyntaxNode child : node.named_children()) {
-      const std::string_view kind = child.kind();
+  // Visits the statements below node `node` at nesting `depth`; a control statement deeper than
+  // the limit is reported and not entered, so a deep chain gives one finding.
+  void visit(uint32_t node, int64_t depth) {
+    if (node == NodeList::kNone || depth > kMaxDepth) return;  // broken code nested absurdly deep
+    nodes_.for_each_child(node, [&](uint32_t child) {
+      if (!nodes_.is_named(child)) return;
+      const std::string_view kind = nodes_.kind(child);
       const std::string_view keyword = control_keyword(kind);
       if (keyword.empty()) {
         if (holds_statements(kind)) visit(child, depth);
-        continue;
+        return;
       }
       if (depth + 1 > limit_) {
         report(child, keyword, depth + 1);
-        continue;
+        return;
       }
       visit(child, depth + 1);
-    }
+    });
   }
 
  private:
   static constexpr int64_t kMaxDepth = 256;
 
-  void report(SyntaxNode statement, std::string_view keyword, int64_t depth) {
-    const uint32_t begin = statement.begin();
+  void report(uint32_t statement, std::string_view keyword, int64_t depth) {
+    const uint32_t begin = nodes_.begin(statement);
     context_.report("L020", fmt::format("{} nested {} levels deep (limit {})", keyword, depth, limit_),
                     {begin, begin + static_cast<uint32_t>(keyword.size())},
                     fmt::format("move the inner part into a method or function, or leave early (RETURN, EXIT, "
@@ -67,6 +68,7 @@ class NestingCheck {
   }
 
   LintContext& context_;
+  const NodeList& nodes_;
   int64_t limit_;
 };
 
@@ -78,40 +80,47 @@ bool is_conditional_il(std::string_view op) {
   return false;
 }
 
-// The decisions of a body: each IF, ELSIF, CASE branch (not ELSE), FOR, WHILE and REPEAT, each
-// AND_THEN / OR_ELSE (they skip their right operand: a branch of their own; AND and OR evaluate
-// both operands), and each conditional IL jump, call or return.
-int64_t decisions_in(SyntaxNode body) {
+// The decisions of a body (node `body` of `nodes`): each IF, ELSIF, CASE branch (not ELSE), FOR,
+// WHILE and REPEAT, each AND_THEN / OR_ELSE (they skip their right operand: a branch of their own;
+// AND and OR evaluate both operands), and each conditional IL jump, call or return.
+int64_t decisions_in(const NodeList& nodes, uint32_t body) {
+  static const TSFieldId kOperator = NodeList::field_id("operator");
   int64_t decisions = 0;
-  walk_preorder(body, [&](SyntaxNode node) {
-    if (node.is_extra()) return false;
-    const std::string_view kind = node.kind();
+  nodes.walk(body, [&](uint32_t i) {
+    if (nodes.is_extra(i)) return false;
+    const std::string_view kind = nodes.kind(i);
     if (kind == "if_statement" || kind == "elsif_clause" || kind == "case_element" || kind == "for_statement" ||
         kind == "while_statement" || kind == "repeat_statement") {
       ++decisions;
     } else if (kind == "binary_expression") {
-      const std::string op = ast::operator_of(node);
-      if (op == "AND_THEN" || op == "OR_ELSE") ++decisions;
+      const std::string_view op = operator_text(nodes, i);
+      if (check::names_equal(op, "AND_THEN") || check::names_equal(op, "OR_ELSE")) ++decisions;
     } else if (kind == "il_instruction") {
-      if (SyntaxNode op = node.child_by_field("operator"); op && is_conditional_il(op.text())) ++decisions;
+      if (const uint32_t op = nodes.child_by_field(i, kOperator);
+          op != NodeList::kNone && is_conditional_il(nodes.text(op))) {
+        ++decisions;
+      }
     }
-    return node.child_count() > 0;
+    return nodes.has_children(i);
   });
   return decisions;
 }
 
-// Statements of a body at any depth (empty statements and labels are none); IL instructions too.
-int64_t statements_in(SyntaxNode body) {
+// Statements of a body (node `body` of `nodes`) at any depth (empty statements and labels are
+// none); IL instructions too.
+int64_t statements_in(const NodeList& nodes, uint32_t body) {
   int64_t count = 0;
-  walk_preorder(body, [&](SyntaxNode node) {
-    if (node.is_extra()) return false;
-    const ast::StatementKind kind = ast::statement_kind(node);
-    if ((kind != ast::StatementKind::Unknown && kind != ast::StatementKind::Empty &&
-         kind != ast::StatementKind::Label) ||
-        node.kind() == "il_instruction") {
+  nodes.walk(body, [&](uint32_t i) {
+    if (nodes.is_extra(i)) return false;
+    const std::string_view kind = nodes.kind(i);
+    // Every statement kind but labels ends in _statement (ast::statement_kind decides which).
+    if (kind.ends_with("_statement")) {
+      const ast::StatementKind statement = ast::statement_kind(nodes.node(i));
+      if (statement != ast::StatementKind::Unknown && statement != ast::StatementKind::Empty) ++count;
+    } else if (kind == "il_instruction") {
       ++count;
     }
-    return node.child_count() > 0;
+    return nodes.has_children(i);
   });
   return count;
 }
@@ -121,7 +130,7 @@ int64_t statements_in(SyntaxNode body) {
 void check_nesting(LintContext& context) {
   NestingCheck check(context, context.threshold("max_nesting", 4));
   for (const Symbol* pou : context.pous()) {
-    for (SyntaxNode body : bodies_of(*pou)) check.visit(body, 0);
+    for (SyntaxNode body : bodies_of(*pou)) check.visit(context.nodes().index_of(body), 0);
   }
 }
 
@@ -130,7 +139,7 @@ void check_complexity(LintContext& context) {
   for (const Symbol* pou : context.pous()) {
     if (!is_measured(*pou)) continue;
     int64_t complexity = 1;
-    for (SyntaxNode body : bodies_of(*pou)) complexity += decisions_in(body);
+    for (SyntaxNode body : bodies_of(*pou)) complexity += decisions_in(context.nodes(), context.nodes().index_of(body));
     if (complexity <= limit) continue;
     context.report("L021",
                    fmt::format("{} has a cyclomatic complexity of {} (limit {})", pou_label(*pou), complexity, limit),
@@ -147,7 +156,7 @@ void check_pou_length(LintContext& context) {
   for (const Symbol* pou : context.pous()) {
     if (!is_measured(*pou)) continue;
     int64_t count = 0;
-    for (SyntaxNode body : bodies_of(*pou)) count += statements_in(body);
+    for (SyntaxNode body : bodies_of(*pou)) count += statements_in(context.nodes(), context.nodes().index_of(body));
     if (count <= limit) continue;
     context.report("L022", fmt::format("{} has {} statements (limit {})", pou_label(*pou), count, limit),
                    pou->name_range,

@@ -66,33 +66,43 @@ class MagicNumbers {
   MagicNumbers(LintContext& context, std::string_view allowed_text)
       : context_(context), allowed_text_(allowed_text), allowed_(number_list(allowed_text)) {}
 
-  void check_body(SyntaxNode body) {
-    walk_preorder(body, [&](SyntaxNode node) {
-      if (node.is_extra() || exempt_.count({node.begin(), node.end()})) return false;
-      const std::string_view kind = node.kind();
+  // The literals of the body that is node `body` of `nodes`.
+  void check_body(const NodeList& nodes, uint32_t body) {
+    static const TSFieldId kLabel = NodeList::field_id("label");
+    static const TSFieldId kMember = NodeList::field_id("member");
+    static const TSFieldId kIndex = NodeList::field_id("index");
+    static const TSFieldId kOperand = NodeList::field_id("operand");
+    nodes.walk(body, [&](uint32_t i) {
+      if (nodes.is_extra(i) || (!exempt_.empty() && exempt_.count({nodes.begin(i), nodes.end(i)}))) return false;
+      const std::string_view kind = nodes.kind(i);
       if (kind == "case_element") {
-        for (SyntaxNode label : node.children_by_field("label")) exempt_.insert({label.begin(), label.end()});
+        nodes.for_each_child(i, [&](uint32_t label) {
+          if (nodes.field(label) == kLabel) exempt_.insert({nodes.begin(label), nodes.end(label)});
+        });
       } else if (kind == "member_expression") {
         // x.3: the number picks a bit of x.
-        if (SyntaxNode member = node.child_by_field("member"); member && is_number_literal(member.kind())) {
-          exempt_.insert({member.begin(), member.end()});
+        if (const uint32_t member = nodes.child_by_field(i, kMember);
+            member != NodeList::kNone && is_number_literal(nodes.kind(member))) {
+          exempt_.insert({nodes.begin(member), nodes.end(member)});
         }
       } else if (kind == "index_expression") {
         // a[3]: the number picks an element (filling an array element by element is common).
-        for (SyntaxNode index : node.children_by_field("index")) {
-          if (is_number_literal(index.kind())) exempt_.insert({index.begin(), index.end()});
-        }
+        nodes.for_each_child(i, [&](uint32_t index) {
+          if (nodes.field(index) == kIndex && is_number_literal(nodes.kind(index))) {
+            exempt_.insert({nodes.begin(index), nodes.end(index)});
+          }
+        });
       } else if (kind == "unary_expression") {
-        const SyntaxNode operand = node.child_by_field("operand");
-        if (operand && is_number_literal(operand.kind()) && ast::operator_of(node) == "-") {
-          check_literal(operand, node.range(), true);
+        const uint32_t operand = nodes.child_by_field(i, kOperand);
+        if (operand != NodeList::kNone && is_number_literal(nodes.kind(operand)) && operator_text(nodes, i) == "-") {
+          check_literal(nodes.node(operand), nodes.range(i), true);
           return false;
         }
       } else if (is_number_literal(kind)) {
-        check_literal(node, node.range(), false);
+        check_literal(nodes.node(i), nodes.range(i), false);
         return false;
       }
-      return node.child_count() > 0;
+      return nodes.has_children(i);
     });
   }
 
@@ -124,7 +134,7 @@ class MagicNumbers {
 void check_magic_number(LintContext& context) {
   MagicNumbers check(context, context.naming("allowed_numbers", kDefaultAllowed));
   for (const check::Symbol* pou : context.pous()) {
-    for (SyntaxNode body : bodies_of(*pou)) check.check_body(body);
+    for (SyntaxNode body : bodies_of(*pou)) check.check_body(context.nodes(), context.nodes().index_of(body));
   }
 }
 

@@ -11,6 +11,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "checker/lint/node_list.hpp"
 #include "checker/project_model.hpp"
 
 namespace rung::lint {
@@ -64,6 +65,8 @@ struct FileUsage {
 };
 
 FileUsage collect_usage(const check::ProjectModel& model, check::SourceId source);
+// The same with the file's node list built already (`nodes`, of the file's tree).
+FileUsage collect_usage(const check::ProjectModel& model, check::SourceId source, const NodeList& nodes);
 
 // Whether `scope` is `pou` or one of its members (methods, actions, property accessors).
 bool is_within(const check::Symbol* scope, const check::Symbol* pou);

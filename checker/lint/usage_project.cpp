@@ -30,7 +30,10 @@ void ProjectUsage::prepare(const check::ProjectModel& model) {
 const FileUsage& ProjectUsage::file(const check::ProjectModel& model, check::SourceId id) {
   prepare(model);
   Slot& slot = *slots_[id];
-  std::call_once(slot.once, [&] { slot.usage = std::make_unique<FileUsage>(collect_usage(model, id)); });
+  std::call_once(slot.once, [&] {
+    const std::shared_ptr<const NodeList> nodes = cache_.nodes(model, id);
+    slot.usage = std::make_unique<FileUsage>(collect_usage(model, id, *nodes));
+  });
   return *slot.usage;
 }
 

@@ -18,8 +18,13 @@
 
 namespace rung::lint {
 
+class AnalysisCache;
+
 class ProjectUsage {
  public:
+  // The analysis of each file walks the file's node list, shared through `cache`.
+  explicit ProjectUsage(AnalysisCache& cache) : cache_(cache) {}
+
   // All calls are thread-safe: files are linted in parallel.
   const FileUsage& file(const check::ProjectModel& model, check::SourceId id);
   // Project files (not stub libraries) whose text holds `name` as a whole word (case-insensitive),
@@ -62,6 +67,7 @@ class ProjectUsage {
   void prepare(const check::ProjectModel& model);
   const ProjectFacts& facts(const check::ProjectModel& model);
 
+  AnalysisCache& cache_;
   std::once_flag slots_once_;
   std::vector<std::unique_ptr<Slot>> slots_;
   std::once_flag facts_once_;

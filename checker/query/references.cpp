@@ -61,4 +61,14 @@ std::vector<Location> find_references(const Workspace& workspace, const Symbol* 
   return references;
 }
 
+std::vector<Location> find_references_in(const Workspace& workspace, const Symbol* symbol, SourceId source,
+                                         bool include_declaration) {
+  const ProjectModel& model = workspace.model();
+  const Symbol* target = canonical_symbol(model, symbol);
+  std::vector<Location> references;
+  if (!target || target->name.empty() || source >= model.source_count()) return references;
+  collect_in_source(model, source, target, include_declaration, references);
+  return references;
+}
+
 }  // namespace rung::check::query

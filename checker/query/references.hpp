@@ -16,4 +16,8 @@ namespace rung::check::query {
 // global. Sorted by path and offset; `include_declaration` adds the declaring name itself.
 std::vector<Location> find_references(const Workspace& workspace, const Symbol* symbol, bool include_declaration);
 
+// The same in one file only (document highlight), sorted by offset.
+std::vector<Location> find_references_in(const Workspace& workspace, const Symbol* symbol, SourceId source,
+                                         bool include_declaration);
+
 }  // namespace rung::check::query

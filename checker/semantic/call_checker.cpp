@@ -207,8 +207,10 @@ std::vector<CallArgument> call_arguments(SyntaxNode arguments) {
   std::vector<CallArgument> result;
   if (!arguments) return result;
   bool after_bar = false;
-  for (uint32_t i = 0; i < arguments.child_count(); ++i) {
-    SyntaxNode child = arguments.child(i);
+  // One cursor over the children: child(i) starts over from the first child for every i.
+  TSTreeCursor cursor = ts_tree_cursor_new(arguments.raw());
+  for (bool more = ts_tree_cursor_goto_first_child(&cursor); more; more = ts_tree_cursor_goto_next_sibling(&cursor)) {
+    const SyntaxNode child(ts_tree_cursor_current_node(&cursor), arguments.source());
     if (!child.is_named()) {
       after_bar = after_bar || child.text() == "|";
       continue;
@@ -226,6 +228,7 @@ std::vector<CallArgument> call_arguments(SyntaxNode arguments) {
     }
     result.push_back(argument);
   }
+  ts_tree_cursor_delete(&cursor);
   return result;
 }
 

@@ -223,10 +223,14 @@ class Collector {
 
   void add_var_block(Symbol& owner, const ast::VarBlock& block) {
     const ast::VarSection section = block.section();
+    // One pass over the block's children (VarBlock::has_qualifier() would make one per word).
     uint32_t flags = 0;
-    if (block.has_qualifier("CONSTANT")) flags |= kConstant;
-    if (block.has_qualifier("RETAIN")) flags |= kRetain;
-    if (block.has_qualifier("PERSISTENT")) flags |= kPersistent;
+    for (SyntaxNode qualifier : block.node().children_of_kind("var_qualifier")) {
+      const std::string_view word = qualifier.text();
+      if (names_equal(word, "CONSTANT")) flags |= kConstant;
+      if (names_equal(word, "RETAIN")) flags |= kRetain;
+      if (names_equal(word, "PERSISTENT")) flags |= kPersistent;
+    }
     const std::vector<Attribute> block_attributes = attributes_before(block.node());
     const ChildAttributes declared = attributes_of_children(block.node());
     for (const ast::VarDeclaration& declaration : block.declarations()) {

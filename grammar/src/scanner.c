@@ -65,6 +65,8 @@ static const char *const SOFT_KEYWORDS[] = {
     "OPC",
 };
 #define SOFT_KEYWORD_COUNT (sizeof(SOFT_KEYWORDS) / sizeof(SOFT_KEYWORDS[0]))
+/* read_soft_keyword keeps one bit per keyword. */
+_Static_assert(SOFT_KEYWORD_COUNT <= 32, "too many contextual keywords for a 32-bit set");
 
 
 
@@ -445,45 +447,72 @@ static bool followed_by_name(TSLexer *lexer) {
 }
 
 /*
+ * Reads a word (upper case into `word`, cut to `size` - 1 characters; its full length into
+ * `length`) and returns the contextual keyword among `candidates` (one bit per SOFT_KEYWORDS
+ * entry) that it spells, or -1. With `stop_early` the reading stops as soon as no candidate
+ * starts with the characters read: the caller then needs nothing else of the word, and most
+ * names are told apart from every keyword after a character or two (every character costs a
+ * call into the tree-sitter lexer).
+ */
+static int read_soft_keyword(TSLexer *lexer, uint32_t candidates, bool stop_early, char *word,
+                             unsigned size, unsigned *length) {
+  unsigned n = 0;
+  while (is_word_char(lexer->lookahead)) {
+    int32_t c = to_upper(lexer->lookahead);
+    for (unsigned i = 0; i < SOFT_KEYWORD_COUNT; i++) {
+      /* The terminating NUL never equals a word character: a keyword shorter than the word drops out. */
+      if ((candidates & (1u << i)) && SOFT_KEYWORDS[i][n] != c) candidates &= ~(1u << i);
+    }
+    if (n < size - 1) word[n] = (char)c;
+    n++;
+    advance(lexer);
+    if (stop_early && candidates == 0) break;
+  }
+  word[n < size ? n : size - 1] = '\0';
+  *length = n;
+  for (unsigned i = 0; i < SOFT_KEYWORD_COUNT; i++) {
+    if ((candidates & (1u << i)) && SOFT_KEYWORDS[i][n] == '\0') return KW_METHOD + (int)i;
+  }
+  return -1;
+}
+
+/*
  * A word: a contextual keyword where one is valid, or else, right after an IL operator on the
  * same line, the zero-width mark that an operand follows (`operand_valid`).
  */
 static bool scan_word(TSLexer *lexer, const bool *valid_symbols, bool saw_newline, bool operand_valid) {
-  /* Most words are names the internal lexer reads anyway: without a soft keyword that may
-     stand here, a header keyword's first letter or an IL operand, there is nothing to do. */
-  if (!operand_valid) {
-    bool soft_keyword_valid = false;
-    for (unsigned i = 0; i < SOFT_KEYWORD_COUNT && !soft_keyword_valid; i++) {
-      soft_keyword_valid = valid_symbols[KW_METHOD + (int)i];
-    }
-    int32_t initial = to_upper(lexer->lookahead);
-    bool header_initial = initial == 'M' || initial == 'P' || initial == 'A' || initial == 'I' ||
-                          initial == 'C' || initial == 'N';
-    if (!soft_keyword_valid && !header_initial) return false;
+  /* The keywords this word may be: those valid here, and the header keywords, which are taken at
+     the start of a line even where they are not valid (see is_header_keyword). */
+  uint32_t candidates = 0;
+  bool initial_matches = false;
+  int32_t initial = to_upper(lexer->lookahead);
+  for (unsigned i = 0; i < SOFT_KEYWORD_COUNT; i++) {
+    int token = KW_METHOD + (int)i;
+    if (!valid_symbols[token] && !is_header_keyword(token)) continue;
+    candidates |= 1u << i;
+    initial_matches = initial_matches || SOFT_KEYWORDS[i][0] == initial;
   }
+  /* Most words are names the internal lexer reads anyway: when no keyword that may stand here
+     starts with this letter and no IL operand may follow, there is nothing to do. */
+  if (!operand_valid && !initial_matches) return false;
   if (operand_valid) lexer->mark_end(lexer);
   char word[24];
-  unsigned length = read_word(lexer, word, sizeof(word));
-  bool may_be_keyword = length >= 2 && length < sizeof(word);
-  for (unsigned i = 0; may_be_keyword && i < SOFT_KEYWORD_COUNT; i++) {
-    int token = KW_METHOD + (int)i;
-    if (!word_equals(word, SOFT_KEYWORDS[i])) continue;
-    if (valid_symbols[token]) {
-      lexer->mark_end(lexer);
-      if (!followed_by_declaration(lexer, token)) return false;
-      lexer->result_symbol = token;
-      return true;
-    }
-    /* At the start of a line: after a newline, or at column 0 (the word is ASCII, so its
-       length in characters is the column it ends at). get_column() re-reads the line from its
-       start, so it is asked only for the rare header keyword, not for every word. */
-    if (is_header_keyword(token) && (saw_newline || lexer->get_column(lexer) == length)) {
-      lexer->mark_end(lexer);
-      if (!followed_by_name(lexer)) return false;
-      lexer->result_symbol = token;
-      return true;
-    }
-    break;
+  unsigned length = 0;
+  int token = read_soft_keyword(lexer, candidates, !operand_valid, word, sizeof(word), &length);
+  if (token >= 0 && valid_symbols[token]) {
+    lexer->mark_end(lexer);
+    if (!followed_by_declaration(lexer, token)) return false;
+    lexer->result_symbol = token;
+    return true;
+  }
+  /* At the start of a line: after a newline, or at column 0 (the word is ASCII, so its length in
+     characters is the column it ends at). get_column() re-reads the line from its start, so it
+     is asked only for the rare header keyword, not for every word. */
+  if (token >= 0 && (saw_newline || lexer->get_column(lexer) == length)) {
+    lexer->mark_end(lexer);
+    if (!followed_by_name(lexer)) return false;
+    lexer->result_symbol = token;
+    return true;
   }
   if (!operand_valid || is_set_reset_assignment(lexer, word, length) || rest_has_semicolon(lexer, false)) {
     return false;

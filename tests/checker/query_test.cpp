@@ -12,70 +12,37 @@
 #include "checker/query/members.hpp"
 #include "checker/query/references.hpp"
 #include "checker/query/type_at.hpp"
+#include "tests/support/marked_project.hpp"
 
 namespace rung::check {
 namespace {
 
-using Files = std::vector<std::pair<std::string, std::string>>;
+using Files = testing::MarkedProject::Files;
 
-class Project {
+// The shared marked project, with the answers these tests compare: symbols, types and references.
+class Project : public testing::MarkedProject {
  public:
-  explicit Project(Files files, project::Profile profile = project::Profile::Codesys) : files_(std::move(files)) {
-    project::ProjectConfig config;
-    config.profile = profile;
-    workspace_ = Workspace::from_texts(files_, config);
-  }
-
-  const Workspace& workspace() const { return *workspace_; }
-  SourceId id(const std::string& path) const { return *workspace_->model().find_source(path); }
-
-  // The file offset of the '|' in `marked` (a snippet of the file with the cursor marked), in its
-  // `nth` occurrence in the file.
-  uint32_t at(const std::string& path, const std::string& marked, size_t nth = 0) const {
-    const size_t cursor = marked.find('|');
-    std::string snippet = marked;
-    snippet.erase(cursor, 1);
-    const std::string& text = text_of(path);
-    size_t found = text.find(snippet);
-    for (size_t i = 0; i < nth && found != std::string::npos; ++i) found = text.find(snippet, found + 1);
-    EXPECT_NE(found, std::string::npos) << snippet << " not in " << path;
-    return static_cast<uint32_t>(found + cursor);
-  }
-  std::string where(const std::string& path, const std::string& marked, size_t nth = 0) const {
-    return path + "@" + std::to_string(at(path, marked, nth));
-  }
+  using MarkedProject::MarkedProject;
 
   const Symbol* symbol(const std::string& path, const std::string& marked, size_t nth = 0) const {
-    return query::symbol_at(*workspace_, id(path), at(path, marked, nth));
+    return query::symbol_at(workspace(), id(path), at(path, marked, nth));
   }
   const Type* type(const std::string& path, const std::string& marked, size_t nth = 0) const {
-    return query::type_at(*workspace_, id(path), at(path, marked, nth));
+    return query::type_at(workspace(), id(path), at(path, marked, nth));
   }
 
   // "path@offset" of every reference, checking that each range spells the symbol's name.
   std::vector<std::string> references(const Symbol* symbol, bool include_declaration = true) const {
     std::vector<std::string> out;
-    for (const query::Location& location : query::find_references(*workspace_, symbol, include_declaration)) {
+    for (const query::Location& location : query::find_references(workspace(), symbol, include_declaration)) {
       const std::string& text = text_of(location.path);
       const std::string_view spelled =
           std::string_view(text).substr(location.range.begin, location.range.end - location.range.begin);
       EXPECT_TRUE(names_equal(spelled, symbol->name)) << location.path << ": '" << spelled << "'";
-      out.push_back(location.path + "@" + std::to_string(location.range.begin));
+      out.push_back(where(location));
     }
     return out;
   }
-
-  const std::string& text_of(const std::string& path) const {
-    for (const auto& [name, text] : files_) {
-      if (name == path) return text;
-    }
-    ADD_FAILURE() << "no file " << path;
-    return files_.front().second;
-  }
-
- private:
-  Files files_;
-  std::unique_ptr<Workspace> workspace_;
 };
 
 // "path@offset" items in the order find_references gives: by path, then by offset.

@@ -7,7 +7,7 @@
 
 #include "formatter/format.hpp"
 #include "parser/document.hpp"
-#include "tests/support/test_paths.hpp"
+#include "tests/formatter/check_samples.hpp"
 
 namespace rung::format {
 namespace {
@@ -38,12 +38,8 @@ struct SeedRun {
 };
 
 TEST(SeedFormat, EverySeedThatParsesFormatsSafelyAndIdempotently) {
-  const fs::path root = test::shared_dir() / "corpus" / "seeds";
-  if (!fs::is_directory(root)) GTEST_SKIP() << "seed corpus not found at " << root;
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(root))
-    if (entry.is_regular_file()) files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = test_samples::seed_files();
+  if (files.empty()) GTEST_SKIP() << "seed corpus not found next to the repository";
 
   const project::FormatSettings settings[] = {project::FormatSettings{}, non_default_settings()};
   SeedRun run;

@@ -7,6 +7,7 @@
 
 #include "formatter/format.hpp"
 #include "formatter/rewrites.hpp"
+#include "tests/formatter/check_samples.hpp"
 
 namespace rung::format {
 namespace {
@@ -18,17 +19,7 @@ std::optional<std::string> check(const std::string& input, const std::string& ou
   return check_tokens({&in, input}, {&out, output}, rewrites);
 }
 
-const std::string kProgram =
-    "PROGRAM Main\n"
-    "VAR\n"
-    "    x : INT; // counter\n"
-    "    s : STRING := 'abc';\n"
-    "END_VAR\n"
-    "(* body *)\n"
-    "IF x > 0 THEN\n"
-    "    x := x - 1;\n"
-    "END_IF\n"
-    "END_PROGRAM\n";
+using test_samples::kProgram;
 
 TEST(TokenCheck, AcceptsWhitespaceAndKeywordCase) {
   const std::string output =

@@ -170,6 +170,23 @@ END_FUNCTION
   EXPECT_NE(fixed.find("speed := 1;"), std::string::npos) << fixed;
 }
 
+TEST(NamingRules, CaseIsComparedWithADeclarationInAnotherFile) {
+  // Main.st spells the global one way everywhere; only GVL.st shows the declared spelling. A
+  // name spelled like every declaration of it (bRun) is fine.
+  project::ProjectConfig config;
+  auto workspace = check::Workspace::from_texts(
+      {{"GVL.st", "VAR_GLOBAL\n    gCount : INT;\n    bRun : BOOL;\nEND_VAR\n"},
+       {"Main.st", "PROGRAM PRG_Main\nIF bRun THEN\n    gcount := gcount + 1;\nEND_IF\nEND_PROGRAM\n"}},
+      config);
+  Strings found;
+  for (const FileFindings& file : lint_all(*workspace, config.lint, 1)) {
+    for (const Finding& finding : file.findings) {
+      if (finding.diagnostic.code == "L006") found.push_back(file.path + ": " + finding.diagnostic.message);
+    }
+  }
+  EXPECT_EQ(found, (Strings{"Main.st: 'gcount' is declared as 'gCount'", "Main.st: 'gcount' is declared as 'gCount'"}));
+}
+
 TEST(NamingRules, CommentedOutCodeNeedsCodeThatParses) {
   const std::string text = R"((* Demo of the comment rules. *)
 PROGRAM PRG_Main
