@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <filesystem>
 
@@ -76,6 +77,16 @@ ProjectModel::ProjectModel(const Profile& profile)
       recursion_index_(std::make_unique<RecursionIndex>()) {}
 ProjectModel::~ProjectModel() = default;
 
+namespace {
+
+// Revisions of sources and links, unique in the process.
+uint64_t next_source_revision() {
+  static std::atomic<uint64_t> last{0};
+  return ++last;
+}
+
+}  // namespace
+
 SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::string library_name) {
   const SourceId id = static_cast<SourceId>(sources_.size());
   FileSymbols symbols = collect_file_symbols(id, *document, !library_name.empty(), "");
@@ -85,6 +96,7 @@ SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::strin
 SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::string library_name, FileSymbols symbols) {
   const SourceId id = static_cast<SourceId>(sources_.size());
   auto source = std::make_unique<Source>();
+  source->revision = next_source_revision();
   source->library = !library_name.empty();
   source->library_name = std::move(library_name);
   const std::string stem = gvl_name_for(document->path());
@@ -105,6 +117,7 @@ SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::strin
 
 bool ProjectModel::update_source(SourceId id, std::unique_ptr<Document> document) {
   Source& source = *sources_[id];
+  source.revision = next_source_revision();
   FileSymbols fresh = collect_file_symbols(id, *document, source.library, "");
   if (relink_bodies_only(source, document, fresh)) return false;
   const std::string stem = gvl_name_for(document->path());
@@ -126,6 +139,7 @@ std::optional<SourceId> ProjectModel::find_source(std::string_view path) const {
 }
 
 void ProjectModel::link() {
+  link_revision_ = next_source_revision();
   globals_.clear();
   global_variables_.clear();
   enum_values_.clear();

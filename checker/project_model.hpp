@@ -34,6 +34,9 @@ struct Source {
   // Findings of the link step that belong to this file (unknown types in declarations, ...).
   std::vector<Diagnostic> link_diagnostics;
   std::string gvl_name_storage;  // a plain file's GVL name (its file name), viewed by its symbols
+  // Changes whenever the document is replaced, and is never the same in two models: analyses kept
+  // across edits (lint::ProjectIndex) compare it to know which files to read again.
+  uint64_t revision = 0;
 };
 
 // A second project-wide declaration of a global name, and its E003 (shared by link() and the
@@ -66,6 +69,9 @@ class ProjectModel {
   // Threads for the whole-project passes of link() (0: one per core; default 1).
   void set_threads(unsigned threads) { threads_ = threads; }
   unsigned threads() const { return threads_; }
+  // Changes with every link(), and is never the same in two models: what a file resolves against
+  // other files' declarations stays valid while it does (a body-only update keeps it).
+  uint64_t link_revision() const { return link_revision_; }
 
   size_t source_count() const { return sources_.size(); }
   const Source& source(SourceId id) const { return *sources_[id]; }
@@ -168,6 +174,7 @@ class ProjectModel {
   mutable std::mutex recursion_mutex_;
   mutable std::atomic<bool> recursion_current_{false};  // recursion_index_ matches the linked model
   unsigned threads_ = 1;
+  uint64_t link_revision_ = 0;
   mutable std::mutex types_mutex_;  // derived types may be created while bodies are checked
 };
 

@@ -54,6 +54,11 @@ void ProjectSet::index_paths(Project& project) {
   }
 }
 
+lint::FileFindings Project::lint(check::SourceId source) const {
+  lint::AnalysisCache cache(lint_index.get());
+  return lint::lint_source(*workspace, source, settings().lint, &cache);
+}
+
 std::unique_ptr<Project> ProjectSet::load_project(const fs::path& root, const LoadProgress& progress) {
   auto project = std::make_unique<Project>();
   project->root = root;

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "checker/check.hpp"
+#include "checker/lint/lint.hpp"
+#include "checker/lint/project_index.hpp"
 
 namespace rung::lsp {
 
@@ -26,8 +28,14 @@ struct Project {
   std::set<check::SourceId> removed;  // deleted on disk: kept (empty) in the model, hidden from features
   uint64_t generation = 0;            // bumped by every change, for caches of feature results
 
+  // The linter's project-wide index, kept across edits: a keystroke's lint re-reads the edited
+  // file instead of the whole project (only the worker thread lints).
+  std::unique_ptr<lint::ProjectIndex> lint_index = std::make_unique<lint::ProjectIndex>();
+
   const project::ProjectConfig& settings() const { return config.config; }
   const check::ProjectModel& model() const { return workspace->model(); }
+  // The lint findings of one file, with the project's [lint] settings.
+  lint::FileFindings lint(check::SourceId source) const;
 };
 
 struct FileRef {

@@ -35,7 +35,7 @@ bool is_unnecessary(std::string_view code) { return code == "L071" || code == "L
 Json Session::diagnostics_of(const DocumentRef& document) const {
   const Project& project = *document.project;
   std::vector<Diagnostic> all = project.workspace->check_source(document.source).diagnostics;
-  lint::FileFindings lint = lint::lint_source(*project.workspace, document.source, project.settings().lint);
+  lint::FileFindings lint = project.lint(document.source);
   for (lint::Finding& finding : lint.findings) all.push_back(std::move(finding.diagnostic));
   sort_diagnostics(all);
   Json out = Json::array();

@@ -52,6 +52,17 @@ std::shared_ptr<const NodeList> AnalysisCache::nodes(const check::ProjectModel& 
   return slot->list;
 }
 
+ProjectIndex& AnalysisCache::index(const check::ProjectModel& model) {
+  std::call_once(index_once_, [&] {
+    if (!kept_index_) {
+      own_index_ = std::make_unique<ProjectIndex>();
+      kept_index_ = own_index_.get();
+    }
+    kept_index_->refresh(model);
+  });
+  return *kept_index_;
+}
+
 void AnalysisCache::release_nodes(check::SourceId source) {
   std::lock_guard lock(mutex_);
   nodes_.erase(source);

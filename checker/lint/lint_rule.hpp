@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "checker/lint/node_list.hpp"
+#include "checker/lint/project_index.hpp"
 #include "checker/project/lint_settings.hpp"
 #include "checker/project_model.hpp"
 #include "parser/diagnostic.hpp"
@@ -49,6 +50,13 @@ struct Finding {
 // it never sees an edited model.
 class AnalysisCache {
  public:
+  // `kept`: a project index the caller keeps across runs (see project_index.hpp); without one the
+  // run builds its own.
+  explicit AnalysisCache(ProjectIndex* kept = nullptr) : kept_index_(kept) {}
+
+  // The project index, brought up to date with `model` by the first caller of the run.
+  ProjectIndex& index(const check::ProjectModel& model);
+
   // The analysis of type T; T is default-constructed, or constructed with this cache if it can be
   // (to ask for node lists). Its constructor must not call get().
   template <typename T>
@@ -77,6 +85,9 @@ class AnalysisCache {
     std::shared_ptr<const NodeList> list;
   };
 
+  ProjectIndex* kept_index_ = nullptr;
+  std::unique_ptr<ProjectIndex> own_index_;
+  std::once_flag index_once_;
   std::mutex mutex_;
   std::unordered_map<std::type_index, std::shared_ptr<void>> entries_;
   std::unordered_map<check::SourceId, std::shared_ptr<NodesSlot>> nodes_;

@@ -106,42 +106,6 @@ void check_name_too_short(LintContext& context) {
 
 namespace {
 
-// How the project's own declarations (not library stubs) spell each name, built once per lint run
-// (AnalysisCache): L006 reports a name written with other upper/lower case than the project
-// declaration it resolves to, so a name that no project declaration spells otherwise needs no
-// resolving.
-class DeclaredSpellings {
- public:
-  const DeclaredSpellings& of(const check::ProjectModel& model) {
-    std::call_once(once_, [&] {
-      for (check::SourceId id = 0; id < model.source_count(); ++id) {
-        const check::Source& source = model.source(id);
-        if (source.library) continue;
-        for (const Symbol& symbol : source.symbols.storage) {
-          if (symbol.name.empty()) continue;
-          auto [entry, added] = spellings_.try_emplace(symbol.name, Spelling{symbol.name});
-          if (!added && entry->second.first != symbol.name) entry->second.several = true;
-        }
-      }
-    });
-    return *this;
-  }
-
-  // Whether some project declaration spells `written` with other upper/lower case.
-  bool may_differ(std::string_view written) const {
-    auto found = spellings_.find(written);
-    return found != spellings_.end() && (found->second.several || found->second.first != written);
-  }
-
- private:
-  struct Spelling {
-    std::string_view first;
-    bool several = false;  // declarations spell it in more than one way
-  };
-  std::once_flag once_;
-  std::unordered_map<std::string_view, Spelling, check::NameHash, check::NameEqual> spellings_;
-};
-
 // What a name resolves to depends on its scope, how it is used, and the expression around it
 // (obj.name, E#name): resolutions are cached under all three, so each distinct name of a POU is
 // looked up once.
@@ -197,7 +161,7 @@ void check_name_case(LintContext& context) {
   const check::SourceId id = context.source_id();
   // Only a name that some project declaration spells otherwise can be reported: the others are
   // passed over without resolving them.
-  const DeclaredSpellings& spellings = context.cache().get<DeclaredSpellings>().of(model);
+  const ProjectIndex& spellings = context.cache().index(model);
   // Declaring name tokens are where the spelling comes from; they are skipped without asking.
   std::unordered_set<uint32_t> declarations;
   for (const Symbol& symbol : context.source().symbols.storage) declarations.insert(symbol.name_range.begin);
@@ -207,7 +171,7 @@ void check_name_case(LintContext& context) {
   nodes.walk(0, [&](uint32_t i) {
     if (nodes.is_extra(i)) return false;
     if (nodes.kind(i) != "identifier") return nodes.has_children(i);
-    if (!spellings.may_differ(nodes.text(i))) return false;
+    if (!spellings.spelled_otherwise(nodes.text(i))) return false;
     if (declarations.count(nodes.begin(i)) || nodes.is_missing(i)) return false;
     const SyntaxNode node = nodes.node(i);
     const Symbol* scope = scopes.at(node.begin());

@@ -218,18 +218,12 @@ class WriteCollector {
   std::vector<Branch> branches_;
 };
 
-bool mentions_output_address(std::string_view text) {
-  for (size_t at = text.find('%'); at != std::string_view::npos; at = text.find('%', at + 1)) {
-    if (at + 1 < text.size() && (text[at + 1] == 'Q' || text[at + 1] == 'q')) return true;
-  }
-  return false;
-}
-
 // Every write of a physical output in the project, built once per lint run.
 class ProjectOutputWrites {
  public:
-  const std::vector<OutputWrite>& writes(const check::ProjectModel& model, ProjectUsage& usage) {
-    std::call_once(once_, [&] { build(model, usage); });
+  const std::vector<OutputWrite>& writes(const check::ProjectModel& model, ProjectUsage& usage,
+                                         const ProjectIndex& index) {
+    std::call_once(once_, [&] { build(model, usage, index); });
     return writes_;
   }
   // The first place that writes `key`.
@@ -239,7 +233,7 @@ class ProjectOutputWrites {
   }
 
  private:
-  void build(const check::ProjectModel& model, ProjectUsage& usage) {
+  void build(const check::ProjectModel& model, ProjectUsage& usage, const ProjectIndex& index) {
     // The outputs: located variables at a complete %Q address, by their canonical address.
     std::map<const Symbol*, std::string> outputs;
     std::set<std::string, std::less<>> names;
@@ -256,10 +250,7 @@ class ProjectOutputWrites {
       for (SourceId id : usage.files_mentioning(model, variable->name)) files.insert(id);
     }
     for (SourceId id = 0; id < model.source_count(); ++id) {
-      const check::Source& source = model.source(id);
-      if (!source.library && source.document->tree() && mentions_output_address(source.document->tree()->text())) {
-        files.insert(id);
-      }
+      if (index.mentions_output_address(id)) files.insert(id);
     }
     for (SourceId id : files) {
       for (const Symbol* pou : check::pous_of(model.source(id).symbols)) {
@@ -295,7 +286,7 @@ std::string pou_name(const Symbol& pou) {
 void check_output_writes(LintContext& context) {
   const check::ProjectModel& model = context.model();
   ProjectOutputWrites& index = context.cache().get<ProjectOutputWrites>();
-  for (const OutputWrite& write : index.writes(model, project_usage(context))) {
+  for (const OutputWrite& write : index.writes(model, project_usage(context), context.cache().index(model))) {
     if (write.source != context.source_id() || !write.new_place) continue;
     const OutputWrite* first = index.first(write.key);
     if (!first || first == &write) continue;

@@ -3,19 +3,6 @@
 #include "checker/lint/lint_rule.hpp"
 
 namespace rung::lint {
-namespace {
-
-bool is_word_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-         static_cast<unsigned char>(c) >= 0x80;  // identifiers may hold letters beyond ASCII
-}
-
-bool is_word_start(char c) {
-  return is_word_char(c) && !(c >= '0' && c <= '9');
-}
-
-}  // namespace
-
 ProjectUsage& project_usage(LintContext& context) {
   return context.cache().get<ProjectUsage>();
 }
@@ -42,30 +29,16 @@ const ProjectUsage::ProjectFacts& ProjectUsage::facts(const check::ProjectModel&
     for (check::SourceId id = 0; id < model.source_count(); ++id) {
       const check::Source& source = model.source(id);
       if (source.library) continue;
-      for (const check::Symbol& symbol : source.symbols.storage) {
-        if (symbol.kind == check::SymbolKind::Program) facts_.has_program = true;
-        if (symbol.kind == check::SymbolKind::Configuration) facts_.has_configuration = true;
-        if (symbol.kind != check::SymbolKind::FunctionBlock && symbol.kind != check::SymbolKind::Class) continue;
+      // Programs, configurations and blocks are top-level declarations: the variables, many
+      // times more, need not be looked at (this runs for every file the language server lints).
+      for (const check::Symbol* symbol : source.symbols.top_level) {
+        if (symbol->kind == check::SymbolKind::Program) facts_.has_program = true;
+        if (symbol->kind == check::SymbolKind::Configuration) facts_.has_configuration = true;
+        if (symbol->kind != check::SymbolKind::FunctionBlock && symbol->kind != check::SymbolKind::Class) continue;
         int depth = 0;  // EXTENDS cycles are E-diagnostics of their own
-        for (const check::Symbol* base = symbol.base; base && depth < 32; base = base->base, ++depth) {
-          facts_.derived[base].push_back(&symbol);
+        for (const check::Symbol* base = symbol->base; base && depth < 32; base = base->base, ++depth) {
+          facts_.derived[base].push_back(symbol);
         }
-      }
-      const SyntaxTree* tree = source.document->tree();
-      if (!tree) continue;
-      const std::string_view text = tree->text();
-      for (size_t at = 0; at < text.size();) {
-        if (!is_word_char(text[at])) {
-          ++at;
-          continue;
-        }
-        size_t end = at;
-        while (end < text.size() && is_word_char(text[end])) ++end;
-        if (is_word_start(text[at])) {
-          std::vector<check::SourceId>& files = facts_.words[text.substr(at, end - at)];
-          if (files.empty() || files.back() != id) files.push_back(id);
-        }
-        at = end;
       }
     }
   });
@@ -74,10 +47,7 @@ const ProjectUsage::ProjectFacts& ProjectUsage::facts(const check::ProjectModel&
 
 std::span<const check::SourceId> ProjectUsage::files_mentioning(const check::ProjectModel& model,
                                                                 std::string_view name) {
-  const ProjectFacts& known = facts(model);
-  auto found = known.words.find(name);
-  if (found == known.words.end()) return {};
-  return found->second;
+  return cache_.index(model).files_mentioning(name);
 }
 
 std::span<const check::Symbol* const> ProjectUsage::derived_of(const check::ProjectModel& model,
@@ -97,9 +67,18 @@ bool ProjectUsage::has_configuration(const check::ProjectModel& model) {
 }
 
 bool ProjectUsage::maybe_named_unresolved(const check::ProjectModel& model, std::string_view name) {
+  ProjectIndex& index = cache_.index(model);
   for (const check::SourceId id : files_mentioning(model, name)) {
-    const FileUsage& usage = file(model, id);
-    if (usage.unresolved_names.contains(name) || usage.inactive_names.contains(name)) return true;
+    // The language server asks this for every variable of an edited file, and common names are in
+    // thousands of files: their names are kept in the index, across lint runs.
+    const bool unresolved = index.leaves_unresolved(model, id, name, [&] {
+      const FileUsage& usage = file(model, id);
+      ProjectIndex::NameSet names;
+      for (const std::string_view unresolved : usage.unresolved_names) names.emplace(unresolved);
+      for (const std::string_view inactive : usage.inactive_names) names.emplace(inactive);
+      return names;
+    });
+    if (unresolved) return true;
   }
   return false;
 }

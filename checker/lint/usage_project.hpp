@@ -59,7 +59,6 @@ class ProjectUsage {
     std::unique_ptr<FileUsage> usage;
   };
   struct ProjectFacts {
-    std::unordered_map<std::string_view, std::vector<check::SourceId>, check::NameHash, check::NameEqual> words;
     std::unordered_map<const check::Symbol*, std::vector<const check::Symbol*>> derived;
     bool has_program = false;
     bool has_configuration = false;

@@ -1,5 +1,7 @@
 #include "checker/query/call_site.hpp"
 
+#include <algorithm>
+
 #include "checker/query/resolve.hpp"
 #include "checker/query/written_expression.hpp"
 
@@ -15,6 +17,20 @@ bool is_parameter(const Symbol& member) {
 }
 
 bool is_en_eno(std::string_view name) { return names_equal(name, "EN") || names_equal(name, "ENO"); }
+
+// After a formal argument (`fbTimer(IN := x, |`) the next one is written formally too, so it gives
+// the first input after the informal ones that no formal argument has named yet (PT), not the
+// input at its position (IN again).
+const Symbol* next_unnamed_parameter(const std::vector<const Symbol*>& positional, size_t informal,
+                                     const std::vector<std::string_view>& given) {
+  for (size_t i = informal; i < positional.size(); ++i) {
+    const bool named = std::any_of(given.begin(), given.end(), [&](std::string_view name) {
+      return named_parameter({positional[i]}, name) != nullptr;
+    });
+    if (!named) return positional[i];
+  }
+  return nullptr;
+}
 
 }  // namespace
 
@@ -65,10 +81,11 @@ std::optional<CallSite> call_site_of(const ProjectModel& model, SourceId source,
   if (!site.call.named.empty()) {
     site.active = named_parameter(call_parameters(callee), site.call.named);
   } else {
-    // Informal arguments before the cursor count; formal ones do not move the position.
-    size_t index = site.call.argument_index;
-    index -= std::min(index, site.call.given.size());
-    site.active = positional_parameter(positional_parameters(callee), index);
+    // Informal arguments before the cursor take the first inputs; formal ones do not move the position.
+    const std::vector<const Symbol*> positional = positional_parameters(callee);
+    const size_t informal = site.call.argument_index - std::min(site.call.argument_index, site.call.given.size());
+    site.active = site.call.given.empty() ? positional_parameter(positional, informal)
+                                          : next_unnamed_parameter(positional, informal, site.call.given);
   }
   return site;
 }

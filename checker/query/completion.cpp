@@ -88,6 +88,21 @@ bool is_block(const Symbol& symbol) {
   return symbol.kind == SymbolKind::FunctionBlock || symbol.kind == SymbolKind::Class;
 }
 
+// Whether `symbol` is `declared` or extends it, directly or through its bases: `declared`
+// EXTENDS such a block or interface would form a cycle.
+bool is_or_extends(const Symbol& symbol, const Symbol* declared) {
+  std::vector<const Symbol*> pending{&symbol};
+  std::unordered_set<const Symbol*> seen;  // EXTENDS may form a cycle in broken code
+  while (!pending.empty()) {
+    const Symbol* next = pending.back();
+    pending.pop_back();
+    if (next == declared) return true;
+    if (!next || !seen.insert(next).second) continue;
+    pending.insert(pending.end(), next->bases.begin(), next->bases.end());
+  }
+  return false;
+}
+
 bool is_enum_type(const ProjectModel& model, const Symbol& symbol) {
   return symbol.kind == SymbolKind::DataType && underlying(model.type_of(&symbol))->kind == TypeKind::Enum;
 }
@@ -321,7 +336,9 @@ void add_types(const ProjectModel& model, const CursorContext& context, Collecto
     const bool fits = filter == TypeFilter::Any        ? is_type_symbol(symbol)
                       : filter == TypeFilter::Blocks ? is_block(symbol)
                                                      : symbol.kind == SymbolKind::Interface;
-    if (fits) out.symbol(&symbol, global_group(symbol));
+    // After EXTENDS and IMPLEMENTS the block or interface being declared is the scope.
+    const bool cycle = filter != TypeFilter::Any && context.scope && is_or_extends(symbol, context.scope);
+    if (fits && !cycle) out.symbol(&symbol, global_group(symbol));
   });
   if (filter == TypeFilter::Any) add_library_namespaces(model, out);
 }

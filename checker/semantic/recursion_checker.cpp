@@ -241,8 +241,18 @@ void RecursionIndex::rebuild(const ProjectModel& model) {
 
 void RecursionIndex::rebuild_source(const ProjectModel& model, SourceId id) {
   if (edges_.size() != model.source_count()) return rebuild(model);
-  edges_[id] = edges_of_source(model, id);
-  find_cycles(model);
+  std::vector<CallEdge> fresh = edges_of_source(model, id);
+  // Most body edits (a keystroke) leave the file's calls as they were, only moved: then the
+  // cycles are the same, and only this file's diagnostics could hold the old positions. The
+  // project-wide search is skipped unless they do.
+  const auto same_calls = [](const std::vector<CallEdge>& a, const std::vector<CallEdge>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const CallEdge& x, const CallEdge& y) {
+      return x.from == y.from && x.to == y.to && x.instance == y.instance;
+    });
+  };
+  const bool unchanged = same_calls(edges_[id], fresh) && (id >= found_.size() || found_[id].empty());
+  edges_[id] = std::move(fresh);
+  if (!unchanged) find_cycles(model);
 }
 
 const std::vector<Diagnostic>& RecursionIndex::diagnostics(SourceId id) const {

@@ -52,8 +52,7 @@ std::vector<lint::TextEdit> fix_all_edits(const Document& document, const std::v
 
 void add_lint_actions(ActionRequest& request) {
   const DocumentRef& document = request.document();
-  const lint::FileFindings lint =
-      lint::lint_source(document.workspace(), document.source, document.settings().lint);
+  const lint::FileFindings lint = document.project->lint(document.source);
   const Document& file = document.document();
   std::vector<lint::Finding> fixable;
   for (const lint::Finding& finding : lint.findings) {

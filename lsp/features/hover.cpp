@@ -122,8 +122,7 @@ Json inlay_hints(Session& session, const Json& params) {
                            {"label", fmt::format("{}_TO_{}", hint.from->name, hint.to->name)},
                            {"kind", kHintType},
                            {"paddingRight", true},
-                           {"tooltip", fmt::format("implicit conversion of a {} value to {}", hint.from->name,
-                                                   hint.to->name)}});
+                           {"tooltip", fmt::format("implicit conversion from {} to {}", hint.from->name, hint.to->name)}});
     }
   }
   return hints;

@@ -9,7 +9,7 @@
 
 namespace rung::lsp {
 
-// "local variable of `Main`", "input of `FB_Motor`", "function (standard library `iec`)" ...
+// "local variable of `Main`", "input of `FB_Motor`", "function (library `iec`)" ...
 std::string symbol_role(const check::ProjectModel& model, const check::Symbol& symbol);
 
 std::string symbol_markdown(const check::ProjectModel& model, const check::Symbol& symbol);

@@ -126,7 +126,8 @@ TEST(QueryCompletion, TypePositionsOfferTypesOnly) {
   const MarkedProject project(Files{{"types.st", kTypes},
                                     {"blocks.st",
                                      "INTERFACE I_Run\nEND_INTERFACE\n"
-                                     "FUNCTION_BLOCK FB_Base\nEND_FUNCTION_BLOCK\n"},
+                                     "FUNCTION_BLOCK FB_Base\nEND_FUNCTION_BLOCK\n"
+                                     "FUNCTION_BLOCK FB_Derived EXTENDS FB_Motor\nEND_FUNCTION_BLOCK\n"},
                                     {"main.st",
                                      "FUNCTION_BLOCK FB_Motor EXTENDS \n"
                                      "VAR\n"
@@ -147,6 +148,8 @@ TEST(QueryCompletion, TypePositionsOfferTypesOnly) {
   EXPECT_TRUE(has(offered(project, "main.st", "OF |"), "ST_Point"));
   const std::vector<std::string> bases = offered(project, "main.st", "EXTENDS |");
   EXPECT_TRUE(has(bases, "FB_Base"));
+  EXPECT_FALSE(has(bases, "FB_Motor"));   // a block cannot extend itself
+  EXPECT_FALSE(has(bases, "FB_Derived"));  // nor one that extends it (a cycle)
   EXPECT_FALSE(has(bases, "I_Run"));
   EXPECT_FALSE(has(bases, "#INT"));
   const std::vector<std::string> interfaces = offered(project, "main.st", "IMPLEMENTS |");
@@ -310,6 +313,7 @@ TEST(QueryCallSite, ActiveParameterByPositionNameAndExtensibleInputs) {
   EXPECT_EQ(active("MAX(1, 2, 3, |4"), "MAX:IN2");  // extensible
   EXPECT_EQ(active("PT := T#1|S"), "TON:PT");
   EXPECT_EQ(active("fbTimer(IN := TR|UE"), "TON:IN");
+  EXPECT_EQ(active("fbTimer(IN := TRUE,| PT"), "TON:PT");  // after a formal argument: the next input not named
   EXPECT_EQ(active("x := LIM|IT"), "none");
   EXPECT_EQ(query::call_parameters(project.model().find_global("TON")).size(), 4u);
 }
