@@ -175,7 +175,7 @@ SourceId Workspace::add_file(std::string path, std::string_view bytes) {
   return id;
 }
 
-std::vector<SourceId> Workspace::update(SourceId id, std::string text) {
+std::vector<SourceId> Workspace::update(SourceId id, std::string_view text) {
   const std::string path = model_->source(id).document->path();
   auto document = std::make_unique<Document>(Document::from_bytes(path, text));
   // A body edit re-links only this file (incremental_link.cpp); anything else links the project.

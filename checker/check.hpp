@@ -51,7 +51,7 @@ class Workspace {
   FileDiagnostics check_source(SourceId id) const;
   // An editor changed a file: re-parse it and re-check what depends on it. Returns the ids of
   // the files whose diagnostics may have changed.
-  std::vector<SourceId> update(SourceId id, std::string text);
+  std::vector<SourceId> update(SourceId id, std::string_view text);
   // A file the project did not have (created on disk, or opened in an editor): parsed, added and
   // the project linked again. Every project file's diagnostics may change.
   SourceId add_file(std::string path, std::string_view bytes);

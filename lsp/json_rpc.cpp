@@ -37,7 +37,7 @@ std::optional<MessageReader::Item> MessageReader::next() {
     const size_t end = buffer_.find("\r\n\r\n", consumed_);
     if (end == std::string::npos) {
       // A header block never grows this large; the peer is not speaking LSP.
-      if (buffer_.size() - consumed_ > 64 * 1024) {
+      if (buffer_.size() - consumed_ > size_t{64} * 1024) {
         consumed_ = buffer_.size();
         return Item{{}, "header block longer than 64 KiB without an end; bytes dropped"};
       }

@@ -169,8 +169,8 @@ FileRef ProjectSet::open(const std::string& key, const std::string& text, std::v
   return {&project, project.by_path.begin()->second};
 }
 
-void ProjectSet::change(FileRef file, std::string text, std::vector<Affected>& affected) {
-  std::vector<check::SourceId> ids = file.project->workspace->update(file.source, std::move(text));
+void ProjectSet::change(FileRef file, std::string_view text, std::vector<Affected>& affected) {
+  std::vector<check::SourceId> ids = file.project->workspace->update(file.source, text);
   ++file.project->generation;
   std::erase_if(ids, [&](check::SourceId id) { return file.project->model().source(id).library; });
   note(affected, *file.project, std::move(ids));

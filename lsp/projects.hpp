@@ -70,7 +70,7 @@ class ProjectSet {
   // when it differs), or it joins the project whose sources cover it, or it gets a loose project.
   FileRef open(const std::string& key, const std::string& text, std::vector<Affected>& affected);
   // The editor's text changed.
-  void change(FileRef file, std::string text, std::vector<Affected>& affected);
+  void change(FileRef file, std::string_view text, std::vector<Affected>& affected);
   // The editor closed the file: a project file goes back to its text on disk; a loose project ends.
   void close(const std::string& key, std::vector<Affected>& affected);
 

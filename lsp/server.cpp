@@ -23,7 +23,7 @@ void Server::send(const Json& message) {
   sink_(message);
 }
 
-void Server::receive(std::string body) {
+void Server::receive(const std::string& body) {
   Json message = Json::parse(body, nullptr, false);
   if (message.is_discarded()) {
     send(make_error(nullptr, ErrorCode::ParseError, "the message is not valid JSON"));

@@ -35,7 +35,7 @@ class Server {
   Server& operator=(const Server&) = delete;
 
   // One message body, from the transport's thread, in arrival order.
-  void receive(std::string body);
+  void receive(const std::string& body);
   // A framing error of the transport: logged to the client, the session goes on.
   void transport_error(const std::string& message);
   // The client went away (end of input, closed socket): the worker stops.

@@ -192,7 +192,7 @@ void Session::did_change(const Json& params) {
     }
   }
   std::vector<Affected> affected;
-  projects_.change(*file, std::move(text), affected);
+  projects_.change(*file, text, affected);
   mark_dirty(affected);
 }
 

@@ -18,7 +18,7 @@ namespace {
 void deliver(MessageReader& reader, Server& server) {
   while (auto item = reader.next()) {
     if (item->error.empty()) {
-      server.receive(std::move(item->body));
+      server.receive(item->body);
     } else {
       server.transport_error(item->error);
     }
@@ -48,7 +48,7 @@ int serve_stdio(const ServerOptions& options) {
       },
       options);
   MessageReader reader;
-  std::array<char, 64 * 1024> buffer{};
+  std::array<char, size_t{64} * 1024> buffer{};
   struct stat info {};
   const bool pollable = ::fstat(STDIN_FILENO, &info) == 0 && !S_ISREG(info.st_mode);
   if (pollable) {
@@ -105,7 +105,7 @@ int serve_tcp(uint16_t port, const ServerOptions& options) {
       },
       options);
   MessageReader reader;
-  std::array<char, 64 * 1024> buffer{};
+  std::array<char, size_t{64} * 1024> buffer{};
   for (;;) {
     boost::system::error_code error;
     const size_t n = socket.read_some(asio::buffer(buffer), error);

@@ -29,7 +29,7 @@ std::string enclosing_name(const check::FileSymbols& symbols, uint32_t tree_offs
   if (!best) return {};
   std::string name(best->name);
   for (const check::Symbol* owner = best->owner; owner; owner = owner->owner) {
-    name = std::string(owner->name) + "." + name;
+    name.insert(0, std::string(owner->name) + ".");
   }
   return name;
 }

@@ -1,5 +1,7 @@
 // Branches of IF and CASE (and loop bodies): L030 case-without-else, L032 empty-branch,
 // L033 duplicate-condition, L034 identical-branches.
+#include <fmt/format.h>
+
 #include <string>
 #include <vector>
 
@@ -16,7 +18,7 @@ std::string_view head_text(std::string_view text, TextRange head) {
 
 // What the branch is called in a message: "the THEN branch of 'IF bRun'", "CASE branch '1, 2'".
 std::string branch_name(std::string_view text, const Branch& branch) {
-  const std::string head = in_message(head_text(text, branch.head));
+  std::string head = in_message(head_text(text, branch.head));
   switch (branch.kind) {
     case Branch::Kind::Then: return "the THEN branch of '" + head + "'";
     case Branch::Kind::Elsif: return "the branch '" + head + "'";
@@ -165,8 +167,8 @@ void check_identical_branches(LintContext& context) {
         if (is_else(branches[j]) || !same_tokens(nodes, branches[j].body, branches[i].body)) continue;
         const std::string first = in_message(head_text(text, branches[j].head));
         const std::string second = in_message(head_text(text, branches[i].head));
-        context.report("L034", "CASE branch '" + second + "' does the same as branch '" + first + "'", branches[i].head,
-                       "merge the labels into one branch (" + first + ", " + second + ") if that is what is meant",
+        context.report("L034", fmt::format("CASE branch '{}' does the same as branch '{}'", second, first), branches[i].head,
+                       fmt::format("merge the labels into one branch ({}, {}) if that is what is meant", first, second),
                        {DiagnosticLabel{branches[j].head, "the same statements here"}});
         break;
       }

@@ -215,6 +215,7 @@ void check_variable_prefix(LintContext& context) {
     const size_t scope_length = matched_prefix_length(name, context.naming(scope.key, scope.fallback));
     const std::string_view rest = name.substr(scope_length);
     std::vector<std::string> chain;
+    chain.reserve(levels.size());
     for (const TypeLevel& level : levels) chain.push_back(level.pattern);
     if (has_prefix_chain(rest, chain)) continue;
     const TypeLevel& first = levels.front();

@@ -183,12 +183,12 @@ class WriteCollector {
           const Symbol* qualifier = model_.lookup(&pou_, object.text());
           if (qualifier && qualifier->kind == check::SymbolKind::GlobalList) break;  // GVL.xOut
         }
-        part = "." + normalized(member.text()) + part;
+        part.insert(0, "." + normalized(member.text()));
         root = object;
       } else if (kind == "index_expression") {
         const SyntaxNode object = root.child_by_field("object");
         if (!object) return;
-        part = normalized(std::string_view(root.text()).substr(object.end() - root.begin())) + part;
+        part.insert(0, normalized(std::string_view(root.text()).substr(object.end() - root.begin())));
         root = object;
       } else {
         return;  // pointer^ := ...: not a located variable

@@ -7,7 +7,6 @@
 namespace rung::lint::semantic {
 
 using check::Symbol;
-using check::TypeKind;
 
 namespace {
 

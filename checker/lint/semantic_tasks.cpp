@@ -78,6 +78,7 @@ std::vector<Task> read_tasks(const check::ProjectModel& model) {
     }
   }
   std::vector<Task> result;
+  result.reserve(tasks.size());
   for (auto& [key, task] : tasks) result.push_back(std::move(task));
   // Tasks of one name in two resources: say which resource.
   for (Task& task : result) {

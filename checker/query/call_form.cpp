@@ -43,7 +43,7 @@ std::optional<WrittenCall> written_call_at(const Workspace& workspace, SourceId 
 }
 
 std::optional<CallRewrite> rewrite(const Workspace& workspace, SourceId source, const WrittenCall& site,
-                                   std::vector<lint::TextEdit> tree_edits) {
+                                   const std::vector<lint::TextEdit>& tree_edits) {
   std::optional<std::vector<lint::TextEdit>> edits =
       file_edits_of(*workspace.model().source(source).document, tree_edits);
   if (!edits) return std::nullopt;
@@ -64,7 +64,7 @@ std::optional<CallRewrite> to_formal_call(const Workspace& workspace, SourceId s
     const uint32_t at = argument.value.begin();
     edits.push_back(lint::TextEdit{{at, at}, std::string(inputs[i]->name) + " := "});
   }
-  return rewrite(workspace, source, *site, std::move(edits));
+  return rewrite(workspace, source, *site, edits);
 }
 
 std::optional<CallRewrite> to_informal_call(const Workspace& workspace, SourceId source, uint32_t file_offset) {
@@ -82,7 +82,7 @@ std::optional<CallRewrite> to_informal_call(const Workspace& workspace, SourceId
     if (named_parameter(call_parameters(site->callee), argument.name.text()) != inputs[i]) return std::nullopt;
     edits.push_back(lint::TextEdit{{argument.name.begin(), argument.value.begin()}, ""});
   }
-  return rewrite(workspace, source, *site, std::move(edits));
+  return rewrite(workspace, source, *site, edits);
 }
 
 }  // namespace rung::check::query

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "checker/query/doc_comment.hpp"
 #include "checker/query/source_edits.hpp"
 #include "parser/keywords.hpp"
 
@@ -50,6 +51,23 @@ std::string skeleton(const Symbol& member, std::string_view indentation, std::st
     out += std::string(newline) + std::string(indentation) + keyword_in_case(closer, settings, member.node.child(0).text());
   }
   return out;
+}
+
+// The interface member's doc comment as a (* ... *) comment above the implementation, so that
+// hover on the implementation says what the interface promised; "" when it has none.
+std::string doc_lines(const ProjectModel& model, const Symbol& member, std::string_view indentation,
+                      std::string_view newline) {
+  const std::string doc = doc_comment(model, member);
+  if (doc.empty() || doc.find("*)") != std::string::npos) return {};
+  std::string out = std::string(indentation) + "(* ";
+  for (const char c : doc) {
+    if (c == '\n') {
+      out += std::string(newline) + std::string(indentation) + "   ";
+    } else {
+      out += c;
+    }
+  }
+  return out + " *)" + std::string(newline);
 }
 
 }  // namespace
@@ -104,7 +122,7 @@ std::optional<lint::TextEdit> implement_members(const Workspace& workspace, cons
   std::string code;
   for (const Symbol* member : members) {
     if (!member->node) return std::nullopt;
-    code += skeleton(*member, indentation, newline, settings) + newline;
+    code += doc_lines(workspace.model(), *member, indentation, newline) + skeleton(*member, indentation, newline, settings) + newline;
   }
   lint::TextEdit edit;
   const SyntaxNode end_block = end_keyword(block.node, block.kind == SymbolKind::Class ? "END_CLASS" : "END_FUNCTION_BLOCK");

@@ -1,9 +1,9 @@
 // "Implement missing interface members": the fix of E204. A FUNCTION_BLOCK that IMPLEMENTS an
 // interface must have each of the interface's methods and properties (its base interfaces'
 // too, inherited ones count: the rule of the declaration checker). The skeletons are the
-// interface's own declarations, copied with their signatures, VAR blocks and comments, and
-// inserted before END_FUNCTION_BLOCK (or after the block's last member when the file writes
-// members after the block, the CODESYS object shape).
+// interface's own declarations, copied with their signatures, VAR blocks and comments (the doc
+// comment above each member too), and inserted before END_FUNCTION_BLOCK (or after the block's
+// last member when the file writes members after the block, the CODESYS object shape).
 #pragma once
 
 #include <optional>

@@ -286,6 +286,7 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
           continue;
         }
         std::vector<std::string_view> names;
+        names.reserve(parameters.size());
         for (const auto& p : parameters) names.push_back(p.symbol->name);
         const std::string_view suggestion = closest_name(name.text(), names);
         report(codes::kUnknownParameter, fmt::format("'{}' has no parameter '{}'", callee->name, name.text()),

@@ -435,6 +435,7 @@ class ConfigurationChecker {
     for (SyntaxNode task : tasks) check_task(configuration, task);
     if (holder.kind() == "resource_declaration") tasks.insert(tasks.end(), outer_tasks.begin(), outer_tasks.end());
     std::vector<std::string_view> task_names;
+    task_names.reserve(tasks.size());
     for (SyntaxNode task : tasks) task_names.push_back(task.child_by_field("name").text());
     const std::string where = resource.empty() ? fmt::format("configuration '{}'", configuration.name)
                                                : fmt::format("resource '{}'", resource);
