@@ -145,14 +145,22 @@ class Collector {
   }
 
   std::vector<CompletionCandidate> take(size_t limit, bool* incomplete) {
-    // Members and parameters keep their declaration order; every other group is sorted by name.
+    // Members and parameters keep their declaration order; every other group is sorted by name,
+    // names that start with what is typed first (`LIM`: LIMIT before ADD_LTIME), since clients
+    // such as Neovim's omnifunc show the list in this order.
     auto keeps_order = [](CandidateGroup group) {
       return group == CandidateGroup::Expected || group == CandidateGroup::Member;
     };
+    const std::string typed = upper_name(prefix_);
     std::vector<std::pair<std::string, size_t>> keys;
     keys.reserve(candidates_.size());
     for (size_t i = 0; i < candidates_.size(); ++i) {
-      keys.emplace_back(keeps_order(candidates_[i].group) ? std::string() : upper_name(candidates_[i].name()), i);
+      if (keeps_order(candidates_[i].group)) {
+        keys.emplace_back(std::string(), i);
+        continue;
+      }
+      std::string name = upper_name(candidates_[i].name());
+      keys.emplace_back((name.starts_with(typed) ? "0" : "1") + name, i);
     }
     std::stable_sort(keys.begin(), keys.end(), [&](const auto& a, const auto& b) {
       const CandidateGroup ga = candidates_[a.second].group, gb = candidates_[b.second].group;

@@ -275,6 +275,25 @@ TEST(QueryCompletion, PrefixFiltersAndTheWordIsReplaced) {
   EXPECT_FALSE(query::matches_prefix("fbTimer", "imer"));  // not where a part begins
 }
 
+// Within a group, names that start with the typed letters come first, then the looser matches:
+// a client that keeps the server's order (Neovim's omnifunc) shows LIMIT before ADD_LTIME.
+TEST(QueryCompletion, NamesStartingWithTheTypedLettersComeFirstInTheirGroup) {
+  const MarkedProject project(Files{{"main.st",
+                                     "PROGRAM Main\nVAR bLimitHit : BOOL; LimitLow : INT; END_VAR\n"
+                                     "LimitLow := LIM;\n"
+                                     "END_PROGRAM\n"}});
+  const std::vector<std::string> names = offered(project, "main.st", "LimitLow := LIM|;");
+  const auto position = [&](const std::string& name) {
+    return std::find(names.begin(), names.end(), name) - names.begin();
+  };
+  ASSERT_LT(position("LIMIT"), static_cast<std::ptrdiff_t>(names.size()));
+  ASSERT_LT(position("ADD_LTIME"), static_cast<std::ptrdiff_t>(names.size()));
+  EXPECT_LT(position("LIMIT"), position("ADD_LTIME"));
+  // The same in the POU's own names, which still come before every library function.
+  EXPECT_LT(position("LimitLow"), position("bLimitHit"));
+  EXPECT_LT(position("bLimitHit"), position("LIMIT"));
+}
+
 TEST(QueryCompletion, InsideATwinCatContainer) {
   const std::string pou =
       "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
