@@ -94,7 +94,6 @@ int serve_tcp(uint16_t port, const ServerOptions& options) {
   std::cerr << "rung lsp: listening on 127.0.0.1:" << acceptor.local_endpoint().port() << std::endl;
   asio::ip::tcp::socket socket(io);
   acceptor.accept(socket);
-  std::mutex write_mutex;
   std::atomic<bool> output_broken{false};
   Server server(
       [&](const Json& message) {

@@ -49,7 +49,6 @@ struct ClassifiedName {
   TextRange range;  // FILE coordinates of the name
   NameClass name_class = NameClass::Local;
   uint16_t flags = 0;
-  bool operator==(const ClassifiedName&) const = default;
 };
 
 // The class and flags of names that refer to `symbol`; nullopt for symbols an editor has no
