@@ -14,10 +14,19 @@ ExprInfo type_in(const ProjectModel& model, const Symbol& scope, SyntaxNode expr
   return BodyChecker(model, scope, ignored).type_of(expression);
 }
 
-// obj.member: the members of obj's type and of the blocks it extends (what E005 searches).
+// obj.member: the members of obj's type and of the blocks it extends (what E005 searches), or
+// a global list's variables.
 std::vector<std::string_view> member_candidates(const ProjectModel& model, const Symbol& scope, SyntaxNode object,
                                                 std::string_view member) {
   const ExprInfo info = type_in(model, scope, object);
+  // GVL.member: the list's variables (what E005 searches for a qualified_only list).
+  if (info.names_namespace && info.symbol && info.symbol->kind == SymbolKind::GlobalList) {
+    if (model.find_member(info.symbol, member)) return {};
+    std::vector<std::string_view> names;
+    names.reserve(info.symbol->ordered.size());
+    for (const Symbol* variable : info.symbol->ordered) names.push_back(variable->name);
+    return names;
+  }
   if (info.names_type || info.names_namespace || !info.type) return {};
   const Type* type = underlying(info.type);
   if (type->kind == TypeKind::Reference && type->element) type = underlying(type->element);

@@ -438,8 +438,12 @@ ExprInfo BodyChecker::type_member(SyntaxNode expression, int depth) {
         return info_for_symbol(variable, member_node);
       }
       if (const Symbol* variable = model_.find_global_variable(member)) return info_for_symbol(variable, member_node);
+      std::vector<std::string_view> names;
+      names.reserve(qualifier->ordered.size());
+      for (const Symbol* variable : qualifier->ordered) names.push_back(variable->name);
+      const std::string_view suggestion = closest_name(member, names);
       report(codes::kUnknownMember, fmt::format("global variable list '{}' has no variable '{}'", qualifier->name, member),
-             member_node.range());
+             member_node.range(), suggestion.empty() ? std::string() : fmt::format("did you mean '{}'?", suggestion));
       return unknown;
     }
     if (object_node.kind() == "identifier" && model_.is_library_namespace(object_node.text())) {

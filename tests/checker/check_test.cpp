@@ -52,6 +52,19 @@ TEST(Check, SubrangeConstantOutOfRange) {
   EXPECT_EQ(codes_of("PROGRAM P\nVAR n : INT(0..90); END_VAR\nn := 99;\nn := 90;\nEND_PROGRAM\n"), Codes{"E102"});
 }
 
+TEST(Check, UnknownVariableOfAGlobalListSuggestsTheCloseOne) {
+  auto workspace = Workspace::from_texts(
+      {{"GVL_IO.st", "{attribute 'qualified_only'}\nVAR_GLOBAL\n    bStartButton : BOOL;\n    bStop : BOOL;\nEND_VAR\n"},
+       {"P.st", "PROGRAM P\nVAR b : BOOL; END_VAR\nb := GVL_IO.bStartButon;\nb := GVL_IO.nZzz;\nEND_PROGRAM\n"}},
+      project::ProjectConfig{});
+  const FileDiagnostics result = workspace->check_source(*workspace->model().find_source("P.st"));
+  ASSERT_EQ(result.diagnostics.size(), 2u);
+  EXPECT_EQ(result.diagnostics[0].code, "E005");
+  EXPECT_EQ(result.diagnostics[0].help, "did you mean 'bStartButton'?");
+  EXPECT_EQ(result.diagnostics[1].code, "E005");
+  EXPECT_EQ(result.diagnostics[1].help, "");  // nothing close
+}
+
 TEST(Check, UndeclaredNameSuggestsTheCloseOne) {
   project::ProjectConfig config;
   auto workspace = Workspace::from_texts(

@@ -191,6 +191,14 @@ TEST(NameSuggestions, TheCandidatesTheCheckerNames) {
   EXPECT_EQ(suggested(project, "nCoun|ter := BOOL"), "(none)");                        // declared
 }
 
+TEST(NameSuggestions, AVariableOfAGlobalList) {
+  const MarkedProject project(Files{
+      {"GVL_IO.st", "{attribute 'qualified_only'}\nVAR_GLOBAL\n    bStartButton : BOOL;\nEND_VAR\n"},
+      {"main.st", "PROGRAM Main\nVAR b : BOOL; END_VAR\nb := GVL_IO.bStartButon;\nb := GVL_IO.bStartButton;\nEND_PROGRAM\n"}});
+  EXPECT_EQ(suggested(project, "GVL_IO.bSta|rtButon"), "b := GVL_IO.bStartButton;");
+  EXPECT_EQ(suggested(project, "GVL_IO.bSta|rtButton"), "(none)");  // declared
+}
+
 // ---- declare a variable -----------------------------------------------------------------------
 
 const Files kUses = {
