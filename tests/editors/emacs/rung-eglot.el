@@ -11,7 +11,8 @@
   "Major mode for IEC 61131-3 Structured Text, IL and SFC."
   (setq-local comment-start "// ")
   (setq-local comment-end ""))
-(add-to-list 'auto-mode-alist '("\\.\\(st\\|il\\|exp\\)\\'" . iec61131-mode))
+(add-to-list 'auto-mode-alist
+             '("\\.\\(st\\|il\\|sfc\\|exp\\|EXP\\|TcPOU\\|TcDUT\\|TcGVL\\|TcIO\\)\\'" . iec61131-mode))
 
 (add-to-list 'eglot-server-programs
              `(iec61131-mode . (,(or (getenv "RUNG_LSP_COMMAND") "rung") "lsp")))
