@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "checker/query/source_edits.hpp"
+
 namespace rung::lsp {
 namespace {
 
@@ -51,13 +53,11 @@ constexpr auto kSkeletons = std::to_array<Skeleton>({
 bool is_upper_word_char(char c) { return (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_word_char(char c) { return is_upper_word_char(c) || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'); }
 
-char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + 32) : c; }
-
 // Writes `body` out: keywords in case, \t as the project's indentation, and without snippet
 // syntax for clients that take plain text only (a placeholder keeps its default text).
 std::string render(std::string_view body, const project::FormatSettings& settings, std::string_view typed,
                    bool snippet_support) {
-  const std::string indent = settings.use_tabs ? std::string("\t") : std::string(settings.indent_width, ' ');
+  const std::string indent = check::query::indent_unit(settings);
   std::string out;
   for (size_t i = 0; i < body.size();) {
     const char c = body[i];
@@ -93,16 +93,8 @@ std::string render(std::string_view body, const project::FormatSettings& setting
 
 std::string keyword_in_case(std::string_view keyword, const project::FormatSettings& settings, std::string_view typed,
                             bool elementary_type) {
-  std::string word(keyword);
-  if (elementary_type && !settings.elementary_types_follow_keyword_case) return word;
-  bool lower_case = settings.keyword_case == project::KeywordCase::Lower;
-  if (settings.keyword_case == project::KeywordCase::Preserve) {
-    lower_case = !typed.empty() && std::none_of(typed.begin(), typed.end(), [](char c) { return c >= 'A' && c <= 'Z'; });
-  }
-  if (lower_case) {
-    for (char& c : word) c = lower(c);
-  }
-  return word;
+  if (elementary_type && !settings.elementary_types_follow_keyword_case) return std::string(keyword);
+  return check::query::keyword_in_case(keyword, settings, typed);
 }
 
 Snippet snippet(std::string_view name, const project::FormatSettings& settings, std::string_view typed,

@@ -10,7 +10,7 @@
 
 namespace rung::lsp {
 
-// The word a keyword is written as under `settings` ([format] keyword_case; "preserve" follows
+// The word a keyword is written as under `settings` (query::keyword_in_case: "preserve" follows
 // the case of what the user typed, upper case when nothing is typed yet). `elementary_type`:
 // INT, TIME ... (they follow the keyword case only with elementary_types_follow_keyword_case).
 std::string keyword_in_case(std::string_view keyword, const project::FormatSettings& settings, std::string_view typed,
