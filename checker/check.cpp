@@ -97,8 +97,8 @@ void Workspace::add_libraries(const LoadOptions& options, unsigned threads) {
   model_->link();
 }
 
-std::unique_ptr<Workspace> Workspace::load_files(const std::vector<fs::path>& files, const project::ProjectConfig& config,
-                                                 const LoadOptions& options) {
+std::unique_ptr<Workspace> Workspace::load_files(const std::vector<fs::path>& files,
+                                                 const project::ProjectConfig& config, const LoadOptions& options) {
   std::unique_ptr<Workspace> workspace(new Workspace());
   workspace->config_ = config;
   workspace->model_ = std::make_unique<ProjectModel>(make_profile(config));
@@ -144,7 +144,8 @@ FileDiagnostics Workspace::check_source(SourceId id) const {
   // Semantic findings are in tree coordinates; syntax diagnostics already in file coordinates.
   const Document& document = *source.document;
   for (Diagnostic& diagnostic : semantic) {
-    diagnostic.range = {document.file_offset_of(diagnostic.range.begin), document.file_end_offset_of(diagnostic.range.end)};
+    diagnostic.range = {document.file_offset_of(diagnostic.range.begin),
+                        document.file_end_offset_of(diagnostic.range.end)};
     for (auto& label : diagnostic.labels) {
       label.range = {document.file_offset_of(label.range.begin), document.file_end_offset_of(label.range.end)};
     }
@@ -164,7 +165,8 @@ std::vector<FileDiagnostics> Workspace::check_all(unsigned threads) const {
   }
   std::vector<FileDiagnostics> results(ids.size());
   parallel_for(ids.size(), threads, [&](size_t i) { results[i] = check_source(ids[i]); });
-  std::sort(results.begin(), results.end(), [](const FileDiagnostics& a, const FileDiagnostics& b) { return a.path < b.path; });
+  std::sort(results.begin(), results.end(),
+            [](const FileDiagnostics& a, const FileDiagnostics& b) { return a.path < b.path; });
   return results;
 }
 
@@ -178,13 +180,14 @@ SourceId Workspace::add_file(std::string path, std::string_view bytes) {
 std::vector<SourceId> Workspace::update(SourceId id, std::string_view text) {
   const std::string path = model_->source(id).document->path();
   auto document = std::make_unique<Document>(Document::from_bytes(path, text));
-  // A body edit re-links only this file (incremental_link.cpp); anything else links the project.
-  const bool interface_changed = model_->update_source(id, std::move(document));
-  if (interface_changed) model_->link();
+  // A body edit re-links only this file, a declaration edit the files that name what changed
+  // (incremental_link.cpp); the rest links the project.
+  ProjectModel::SourceUpdate change = model_->update_source(id, std::move(document));
+  if (change.link_all) model_->link();
   const std::vector<SourceId> rewritten = compile_conditionally(*model_);
   const bool others_rewritten =
       std::any_of(rewritten.begin(), rewritten.end(), [&](SourceId other) { return other != id; });
-  if (!interface_changed && !others_rewritten) return {id};
+  if (!change.link_all && !others_rewritten) return std::move(change.affected);
   std::vector<SourceId> all;
   for (SourceId other = 0; other < model_->source_count(); ++other) {
     if (!model_->source(other).library) all.push_back(other);

@@ -115,20 +115,29 @@ SourceId ProjectModel::add_source(std::unique_ptr<Document> document, std::strin
   return id;
 }
 
-bool ProjectModel::update_source(SourceId id, std::unique_ptr<Document> document) {
+ProjectModel::SourceUpdate ProjectModel::update_source(SourceId id, std::unique_ptr<Document> document) {
   Source& source = *sources_[id];
   source.revision = next_source_revision();
   FileSymbols fresh = collect_file_symbols(id, *document, source.library, "");
-  if (relink_bodies_only(source, document, fresh)) return false;
+  if (relink_bodies_only(source, document, fresh)) return {false, {id}};
+  if (auto affected = relink_interface(source, document, fresh)) {
+    link_revision_ = next_source_revision();  // other files' resolutions changed
+    return {false, std::move(*affected)};
+  }
+  // The old symbols are gone: the caller must link() again (other files' types point at them).
+  install_symbols(source, std::move(document), std::move(fresh));
+  return {true, {}};
+}
+
+void ProjectModel::install_symbols(Source& source, std::unique_ptr<Document> document, FileSymbols fresh) {
   const std::string stem = gvl_name_for(document->path());
   source.document = std::move(document);
   source.symbols = std::move(fresh);
-  source.gvl_name_storage = stem;
+  // The name views this string: reassign it only when it changes (a retired GVL may still view it).
+  if (source.gvl_name_storage != stem) source.gvl_name_storage = stem;
   for (Symbol* list : source.symbols.global_lists) {
     if (list->name.empty()) list->name = source.gvl_name_storage;
   }
-  // The old symbols are gone: the caller must link() again (other files' types point at them).
-  return true;
 }
 
 std::optional<SourceId> ProjectModel::find_source(std::string_view path) const {
@@ -140,22 +149,12 @@ std::optional<SourceId> ProjectModel::find_source(std::string_view path) const {
 
 void ProjectModel::link() {
   link_revision_ = next_source_revision();
-  globals_.clear();
-  global_variables_.clear();
-  enum_values_.clear();
-  global_lists_.clear();
-  qualified_only_enums_.clear();
-  libraries_.clear();
   named_types_.clear();
   enum_numbers_.clear();
   types_ = std::make_unique<TypeArena>();
   for (auto& source : sources_) source->link_diagnostics.clear();
-  // Project files first, so their declarations shadow library stubs of the same name.
-  for (const bool library : {false, true}) {
-    for (auto& source : sources_) {
-      if (source->library == library) index_source(*source);
-    }
-  }
+  index_all_sources(true);
+  retired_.clear();  // nothing points at them any more: the indexes and types start over
   // A second link() (an editor change, conditional compilation) starts over: the types resolved by
   // the previous one live in the arena just replaced.
   for (auto& source : sources_) {
@@ -183,7 +182,22 @@ const RecursionIndex& ProjectModel::recursion_index() const {
   return *recursion_index_;
 }
 
-void ProjectModel::index_source(Source& source) {
+void ProjectModel::index_all_sources(bool report_duplicates) {
+  globals_.clear();
+  global_variables_.clear();
+  enum_values_.clear();
+  global_lists_.clear();
+  qualified_only_enums_.clear();
+  libraries_.clear();
+  // Project files first, so their declarations shadow library stubs of the same name.
+  for (const bool library : {false, true}) {
+    for (auto& source : sources_) {
+      if (source->library == library) index_source(*source, report_duplicates);
+    }
+  }
+}
+
+void ProjectModel::index_source(Source& source, bool report_duplicates) {
   for (Symbol* symbol : source.symbols.top_level) {
     if (symbol->name.empty()) continue;
     if (source.library) libraries_[source.library_name].emplace(symbol->name, symbol);
@@ -194,14 +208,15 @@ void ProjectModel::index_source(Source& source) {
       const bool first_library = first->has(kLibrary);
       if (first_library && !source.library) {
         it->second = symbol;  // project shadows library (re-indexing after an edit)
-      } else if (is_duplicate_global(*first, *symbol)) {
+      } else if (report_duplicates && is_duplicate_global(*first, *symbol)) {
         source.link_diagnostics.push_back(duplicate_global_diagnostic(*symbol, *sources_[first->source]));
       }
     }
     if (symbol->kind == SymbolKind::GlobalList) {
       global_lists_.push_back(symbol);
       for (Symbol* variable : symbol->ordered) {
-        if (!symbol->has(kQualifiedOnly) && !variable->name.empty()) global_variables_.emplace(variable->name, variable);
+        if (!symbol->has(kQualifiedOnly) && !variable->name.empty())
+          global_variables_.emplace(variable->name, variable);
       }
     }
     if (symbol->kind == SymbolKind::DataType && named_kind_of(*symbol) == TypeKind::Enum &&
@@ -232,8 +247,8 @@ const Type* ProjectModel::named_type_of(const Symbol* symbol) const {
 void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagnostics) {
   switch (symbol.kind) {
     case SymbolKind::Variable:
-      if (!symbol.type) symbol.type = symbol.type_node ? resolve_type(symbol.type_node, symbol.owner, &diagnostics)
-                                                      : types_->unknown();
+      if (!symbol.type)
+        symbol.type = symbol.type_node ? resolve_type(symbol.type_node, symbol.owner, &diagnostics) : types_->unknown();
       break;
     case SymbolKind::DataType: {
       const Type* type = type_of(&symbol);
@@ -250,9 +265,7 @@ void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagn
       resolve_bases(symbol, diagnostics);
       break;
     }
-    case SymbolKind::EnumValue:
-      symbol.type = symbol.owner ? type_of(symbol.owner) : types_->unknown();
-      break;
+    case SymbolKind::EnumValue: symbol.type = symbol.owner ? type_of(symbol.owner) : types_->unknown(); break;
     case SymbolKind::Program:
     case SymbolKind::Function:
     case SymbolKind::FunctionBlock:
@@ -270,8 +283,7 @@ void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagn
       symbol.type = type_of(&symbol);
       resolve_bases(symbol, diagnostics);
       break;
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -289,7 +301,8 @@ void ProjectModel::resolve_bases(Symbol& symbol, std::vector<Diagnostic>& diagno
   }
 }
 
-const Symbol* ProjectModel::resolve_type_symbol(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) const {
+const Symbol* ProjectModel::resolve_type_symbol(SyntaxNode name, const Symbol* scope,
+                                                std::vector<Diagnostic>* diagnostics) const {
   const Type* type = resolve_type_name(name, scope, diagnostics);
   return type ? type->declaration : nullptr;
 }
@@ -383,7 +396,8 @@ const Type* ProjectModel::resolve_type(SyntaxNode spec, const Symbol* scope, std
   return types_->unknown();  // generic_type, variadic_type: not checked
 }
 
-const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope, std::vector<Diagnostic>* diagnostics) const {
+const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope,
+                                            std::vector<Diagnostic>* diagnostics) const {
   const std::string_view text = name.text();
   // Dotted names: Library.Type, Namespace.Type, GVL-less qualified types (__SYSTEM.TYPE_CLASS).
   if (const size_t dot = text.rfind('.'); dot != std::string_view::npos) {
@@ -392,11 +406,13 @@ const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope
     if (is_library_namespace(qualifier)) {
       if (const Symbol* symbol = find_in_library(qualifier, last)) return type_of(symbol);
     }
-    if (const Symbol* symbol = find_global(last); symbol && symbol->kind != SymbolKind::GlobalList) return type_of(symbol);
+    if (const Symbol* symbol = find_global(last); symbol && symbol->kind != SymbolKind::GlobalList)
+      return type_of(symbol);
     if (diagnostics) {
-      diagnostics->push_back(make_diagnostic(
-          codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text), name.range(),
-          "if it comes from a vendor library, add that library's declarations as stubs (the 'libraries' list under [project] in rung.toml)"));
+      diagnostics->push_back(make_diagnostic(codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text),
+                                             name.range(),
+                                             "if it comes from a vendor library, add that library's declarations as "
+                                             "stubs (the 'libraries' list under [project] in rung.toml)"));
     }
     return types_->unknown();
   }
@@ -420,11 +436,11 @@ const Type* ProjectModel::resolve_type_name(SyntaxNode name, const Symbol* scope
   if (diagnostics) {
     std::vector<std::string_view> candidates = global_type_names();
     const std::string_view suggestion = closest_name(text, candidates);
-    diagnostics->push_back(make_diagnostic(
-        codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text), name.range(),
-        suggestion.empty()
-            ? "declare it, or if it comes from a vendor library, add that library's stubs (the 'libraries' list under [project] in rung.toml)"
-            : fmt::format("did you mean '{}'?", suggestion)));
+    diagnostics->push_back(
+        make_diagnostic(codes::kUnknownLibraryName, fmt::format("unknown type '{}'", text), name.range(),
+                        suggestion.empty() ? "declare it, or if it comes from a vendor library, add that library's "
+                                             "stubs (the 'libraries' list under [project] in rung.toml)"
+                                           : fmt::format("did you mean '{}'?", suggestion)));
   }
   return types_->unknown();
 }
@@ -437,9 +453,9 @@ std::vector<std::string_view> ProjectModel::global_type_names() const {
       names.push_back(name);
     }
   }
-  for (std::string_view name : {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", "LINT", "USINT",
-                                "UINT", "UDINT", "ULINT", "REAL", "LREAL", "TIME", "LTIME", "DATE", "TOD", "DT",
-                                "STRING", "WSTRING", "CHAR", "WCHAR"}) {
+  for (std::string_view name :
+       {"BOOL",  "BYTE", "WORD",  "DWORD", "LWORD", "SINT", "INT", "DINT", "LINT",   "USINT",   "UINT", "UDINT",
+        "ULINT", "REAL", "LREAL", "TIME",  "LTIME", "DATE", "TOD", "DT",   "STRING", "WSTRING", "CHAR", "WCHAR"}) {
     names.push_back(name);
   }
   std::sort(names.begin(), names.end());
@@ -540,7 +556,9 @@ const Symbol* ProjectModel::find_in_global_lists(std::string_view list, std::str
   return nullptr;
 }
 
-bool ProjectModel::is_library_namespace(std::string_view name) const { return libraries_.contains(name); }
+bool ProjectModel::is_library_namespace(std::string_view name) const {
+  return libraries_.contains(name);
+}
 
 const Symbol* ProjectModel::find_in_library(std::string_view library, std::string_view name) const {
   auto found = libraries_.find(library);
@@ -621,9 +639,11 @@ std::vector<std::string_view> ProjectModel::visible_names(const Symbol* scope) c
   for (const auto& [name, symbol] : global_variables_) names.push_back(name);
   for (const auto& [name, symbol] : globals_) names.push_back(name);
   for (const auto& [name, values] : enum_values_) names.push_back(name);
-  std::sort(names.begin(), names.end(), [](std::string_view a, std::string_view b) { return upper_name(a) < upper_name(b); });
-  names.erase(std::unique(names.begin(), names.end(), [](std::string_view a, std::string_view b) { return names_equal(a, b); }),
-              names.end());
+  std::sort(names.begin(), names.end(),
+            [](std::string_view a, std::string_view b) { return upper_name(a) < upper_name(b); });
+  names.erase(
+      std::unique(names.begin(), names.end(), [](std::string_view a, std::string_view b) { return names_equal(a, b); }),
+      names.end());
   return names;
 }
 

@@ -37,6 +37,10 @@ struct Source {
   // Changes whenever the document is replaced, and is never the same in two models: analyses kept
   // across edits (lint::ProjectIndex) compare it to know which files to read again.
   uint64_t revision = 0;
+  // Hashes of the words of the text (case-insensitive), sorted, for `revision` (words_revision):
+  // which files an interface edit may touch. Built on the first such edit.
+  std::vector<uint32_t> words;
+  uint64_t words_revision = 0;
 };
 
 // A second project-wide declaration of a global name, and its E003 (shared by link() and the
@@ -58,11 +62,16 @@ class ProjectModel {
   // The same with the file's symbols collected already (on a loading thread): collect_file_symbols
   // with the id this call gives, source_count() at the time of the call.
   SourceId add_source(std::unique_ptr<Document> document, std::string library_name, FileSymbols symbols);
-  // Replaces a file's text (an editor change). Returns true when what other files can see changed:
-  // then link() must follow and every file may have new diagnostics. Returns false when only
-  // bodies changed: the model is already linked again (incremental_link.cpp) and only this
-  // file's diagnostics can differ.
-  bool update_source(SourceId id, std::unique_ptr<Document> document);
+  // What an editor change leaves to do.
+  struct SourceUpdate {
+    bool link_all = false;           // link() must follow, and every file may have new diagnostics
+    std::vector<SourceId> affected;  // otherwise: the model is linked again, and these files (the
+                                     // edited one first) are the ones whose diagnostics may differ
+  };
+  // Replaces a file's text (an editor change). A body edit re-links this file alone; an edit of
+  // declarations re-links the files that name what changed (incremental_link.cpp); a few edits
+  // (addresses, configurations, stub libraries, or many interface edits in a row) ask for link().
+  SourceUpdate update_source(SourceId id, std::unique_ptr<Document> document);
 
   // Ties names across files and resolves every declaration's type. Deterministic.
   void link();
@@ -142,9 +151,14 @@ class ProjectModel {
   std::vector<const Symbol*> top_level_symbols(SourceId id) const;
 
  private:
-  void index_source(Source& source);
+  void index_source(Source& source, bool report_duplicates = true);
   // incremental_link.cpp: a body-only edit without a full link().
   bool relink_bodies_only(Source& source, std::unique_ptr<Document>& document, FileSymbols& fresh);
+  // incremental_link.cpp: an edit of declarations; nullopt when it needs a full link().
+  std::optional<std::vector<SourceId>> relink_interface(Source& source, std::unique_ptr<Document>& document,
+                                                        FileSymbols& fresh);
+  void install_symbols(Source& source, std::unique_ptr<Document> document, FileSymbols fresh);
+  void index_all_sources(bool report_duplicates);
   void rekey_names(SourceId id, std::string_view old_text);
   void report_duplicate_globals(Source& source);
   void resolve_declarations(Source& source);
@@ -175,6 +189,11 @@ class ProjectModel {
   mutable std::atomic<bool> recursion_current_{false};  // recursion_index_ matches the linked model
   unsigned threads_ = 1;
   uint64_t link_revision_ = 0;
+  // Symbols and texts an interface edit replaced. Only files that name a changed declaration are
+  // resolved again, so the rest must never reach these; they are kept alive anyway (a wrong
+  // answer beats a dangling pointer) and freed by the next link(); relink_interface() asks for
+  // one when too many pile up.
+  std::vector<std::pair<FileSymbols, std::unique_ptr<Document>>> retired_;
   mutable std::mutex types_mutex_;  // derived types may be created while bodies are checked
 };
 

@@ -240,8 +240,11 @@ void RecursionIndex::rebuild(const ProjectModel& model) {
 }
 
 void RecursionIndex::rebuild_source(const ProjectModel& model, SourceId id) {
+  rebuild_sources(model, {id});
+}
+
+void RecursionIndex::rebuild_sources(const ProjectModel& model, const std::vector<SourceId>& ids) {
   if (edges_.size() != model.source_count()) return rebuild(model);
-  std::vector<CallEdge> fresh = edges_of_source(model, id);
   // Most body edits (a keystroke) leave the file's calls as they were, only moved: then the
   // cycles are the same, and only this file's diagnostics could hold the old positions. The
   // project-wide search is skipped unless they do.
@@ -250,8 +253,12 @@ void RecursionIndex::rebuild_source(const ProjectModel& model, SourceId id) {
       return x.from == y.from && x.to == y.to && x.instance == y.instance;
     });
   };
-  const bool unchanged = same_calls(edges_[id], fresh) && (id >= found_.size() || found_[id].empty());
-  edges_[id] = std::move(fresh);
+  bool unchanged = true;
+  for (const SourceId id : ids) {
+    std::vector<CallEdge> fresh = edges_of_source(model, id);
+    unchanged = unchanged && same_calls(edges_[id], fresh) && (id >= found_.size() || found_[id].empty());
+    edges_[id] = std::move(fresh);
+  }
   if (!unchanged) find_cycles(model);
 }
 

@@ -33,6 +33,8 @@ class RecursionIndex {
   void rebuild(const ProjectModel& model);
   // One file's bodies changed (its declarations did not): its edges, then the cycles.
   void rebuild_source(const ProjectModel& model, SourceId id);
+  // Several files' declarations or bodies changed: their edges, then the cycles once.
+  void rebuild_sources(const ProjectModel& model, const std::vector<SourceId>& ids);
   // E209 diagnostics of one file, in tree coordinates.
   const std::vector<Diagnostic>& diagnostics(SourceId id) const;
   // The call graph itself: the edges whose caller is declared in `id` (lint rules follow it from

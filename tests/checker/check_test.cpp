@@ -54,7 +54,8 @@ TEST(Check, SubrangeConstantOutOfRange) {
 
 TEST(Check, UnknownVariableOfAGlobalListSuggestsTheCloseOne) {
   auto workspace = Workspace::from_texts(
-      {{"GVL_IO.st", "{attribute 'qualified_only'}\nVAR_GLOBAL\n    bStartButton : BOOL;\n    bStop : BOOL;\nEND_VAR\n"},
+      {{"GVL_IO.st",
+        "{attribute 'qualified_only'}\nVAR_GLOBAL\n    bStartButton : BOOL;\n    bStop : BOOL;\nEND_VAR\n"},
        {"P.st", "PROGRAM P\nVAR b : BOOL; END_VAR\nb := GVL_IO.bStartButon;\nb := GVL_IO.nZzz;\nEND_PROGRAM\n"}},
       project::ProjectConfig{});
   const FileDiagnostics result = workspace->check_source(*workspace->model().find_source("P.st"));
@@ -140,10 +141,16 @@ TEST(Check, EditInABodyRechecksOnlyThatFile) {
   auto changed = workspace->update(0, "PROGRAM A\nVAR x : INT; END_VAR\nx := z;\nEND_PROGRAM\n");
   EXPECT_EQ(changed, std::vector<SourceId>{0});
   EXPECT_EQ(workspace->check_source(0).diagnostics.size(), 1u);
-  // A declaration change re-checks every file.
+  // A declaration change re-checks the files that name what changed: B names nothing of A.
   changed = workspace->update(0, "PROGRAM A\nVAR x : INT; z : INT; END_VAR\nx := z;\nEND_PROGRAM\n");
-  EXPECT_EQ(changed.size(), 2u);
+  EXPECT_EQ(changed, std::vector<SourceId>{0});
   EXPECT_TRUE(workspace->check_source(0).diagnostics.empty());
+  // B starts naming A.z; then A's interface changes again (z becomes BOOL): both are re-checked.
+  EXPECT_EQ(workspace->update(1, "PROGRAM B\nVAR y : INT; END_VAR\ny := A.z;\nEND_PROGRAM\n"),
+            std::vector<SourceId>{1});
+  changed = workspace->update(0, "PROGRAM A\nVAR x : INT; z : BOOL; END_VAR\nx := 1;\nEND_PROGRAM\n");
+  EXPECT_EQ(changed, (std::vector<SourceId>{0, 1}));
+  EXPECT_FALSE(workspace->check_source(1).diagnostics.empty());  // y := A.z: BOOL into INT
 }
 
 TEST(Check, UnknownQualifierIsTheMissingLibraryCode) {

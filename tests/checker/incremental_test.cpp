@@ -3,6 +3,8 @@
 // link. Run under ASan, these tests also catch views left pointing into a replaced text.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -98,10 +100,116 @@ TEST(IncrementalCheck, SeveralBodyEditsInARow) {
   }
 }
 
-TEST(IncrementalCheck, InterfaceEditLinksTheWholeProject) {
+// The files named in `ids`, by path.
+std::vector<std::string> paths_of(const Workspace& workspace, const std::vector<SourceId>& ids) {
+  std::vector<std::string> paths;
+  for (const SourceId id : ids) paths.push_back(workspace.model().source(id).document->path());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+// The rendered diagnostics of each file.
+std::map<std::string, std::vector<std::string>> by_file(const Workspace& workspace) {
+  std::map<std::string, std::vector<std::string>> files;
+  for (const std::string& line : render(workspace)) files[line.substr(0, line.find(':'))].push_back(line);
+  return files;
+}
+
+// An edit of declarations: the result must equal a fresh load, every file whose diagnostics
+// changed must be among the files update() returned, and those must be exactly `expected`.
+void expect_interface_edit(Files project, const std::string& path, const std::string& text,
+                           std::vector<std::string> expected) {
+  project::ProjectConfig config;
+  auto edited = Workspace::from_texts(project, config);
+  const auto before = by_file(*edited);
+  const SourceId id = *edited->model().find_source(path);
+  const std::vector<SourceId> changed = edited->update(id, text);
+  ASSERT_FALSE(changed.empty());
+  EXPECT_EQ(changed.front(), id) << "the edited file comes first";
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(paths_of(*edited, changed), expected);
+  for (auto& [name, content] : project) {
+    if (name == path) content = text;
+  }
+  auto fresh = Workspace::from_texts(project, config);
+  EXPECT_EQ(render(*edited), render(*fresh)) << "after editing " << path;
+  const auto after = by_file(*edited);
+  const std::vector<std::string> returned = paths_of(*edited, changed);
+  for (const auto& [file, lines] : after) {
+    const auto old_lines = before.find(file);
+    if (old_lines != before.end() && old_lines->second == lines) continue;
+    EXPECT_TRUE(std::find(returned.begin(), returned.end(), file) != returned.end())
+        << file << " has new diagnostics but update() did not return it";
+  }
+}
+
+TEST(IncrementalCheck, RemovedEnumValueRelinksTheFilesThatNameIt) {
   std::string text = kProject[0].second;
   text.replace(text.find("Auto)"), 4, "Automatic");  // E_Mode.Auto no longer exists
-  expect_same_as_fresh(kProject, "Types.st", text, false);
+  // Every file that names a declaration of Types.st: all of its symbols are new.
+  expect_interface_edit(kProject, "Types.st", text, {"Types.st", "GVL.st", "FB_Axis.st", "Main.st"});
+}
+
+TEST(IncrementalCheck, AddedInputRelinksOnlyTheUsersOfTheBlock) {
+  std::string text = kProject[2].second;
+  text.replace(text.find("target : REAL;"), 0, "accel : REAL; ");
+  expect_interface_edit(kProject, "FB_Axis.st", text, {"FB_Axis.st", "Main.st"});
+}
+
+TEST(IncrementalCheck, RemovedInputGivesTheCallerAnError) {
+  std::string text = kProject[2].second;
+  text.replace(text.find("target : REAL;"), 14, "aim : REAL;");
+  text.replace(text.find("Clamp(target"), 12, "Clamp(aim");
+  expect_interface_edit(kProject, "FB_Axis.st", text, {"FB_Axis.st", "Main.st"});
+}
+
+TEST(IncrementalCheck, ChangedFieldTypeReachesUsesThroughTheGlobal) {
+  std::string text = kProject[0].second;
+  text.replace(text.find("pos : REAL"), 10, "pos : STRING");  // gAxis.pos := Clamp(...) now fails
+  expect_interface_edit(kProject, "Types.st", text, {"Types.st", "GVL.st", "FB_Axis.st", "Main.st"});
+}
+
+TEST(IncrementalCheck, RenamedBlockLeavesItsUsersWithUnknownType) {
+  std::string text = kProject[2].second;
+  text.replace(text.find("FB_Axis\n"), 7, "FB_Drive");
+  expect_interface_edit(kProject, "FB_Axis.st", text, {"FB_Axis.st", "Main.st"});
+}
+
+TEST(IncrementalCheck, InterfaceEditsInARowStayLikeAFreshLoad) {
+  project::ProjectConfig config;
+  auto edited = Workspace::from_texts(kProject, config);
+  Files project = kProject;
+  const SourceId id = *edited->model().find_source("Types.st");
+  for (int round = 0; round < 40; ++round) {
+    std::string text = kProject[0].second;
+    const std::string extra = "extra" + std::to_string(round) + " : INT; ";
+    text.replace(text.find("mode : E_Mode;"), 0, extra);
+    if (round % 3 == 1) text.replace(text.find("Auto)"), 4, "Automatic");
+    if (round % 5 == 2) text.replace(text.find("VAR_INPUT v"), 11, "VAR_INPUT value");
+    project[0].second = text;
+    edited->update(id, text);
+    auto fresh = Workspace::from_texts(project, config);
+    ASSERT_EQ(render(*edited), render(*fresh)) << "round " << round;
+  }
+}
+
+TEST(IncrementalCheck, ManyInterfaceEditsEndInAFullLinkThatMatchesAFreshLoad) {
+  project::ProjectConfig config;
+  auto edited = Workspace::from_texts(kProject, config);
+  Files project = kProject;
+  const SourceId id = *edited->model().find_source("FB_Axis.st");
+  size_t incremental = 0;
+  // Past the 256 retired files after which update() links the whole project once.
+  for (int round = 0; round < 300; ++round) {
+    std::string text = kProject[2].second;
+    text.replace(text.find("target : REAL;"), 0, "in" + std::to_string(round) + " : INT; ");
+    project[2].second = text;
+    if (edited->update(id, text).size() < project.size()) ++incremental;
+  }
+  EXPECT_GE(incremental, 250u);
+  EXPECT_LT(incremental, 300u) << "the retired symbols never made update() link the project";
+  auto fresh = Workspace::from_texts(project, config);
+  EXPECT_EQ(render(*edited), render(*fresh));
 }
 
 TEST(IncrementalCheck, EditThatAddsADeclarationLinksTheWholeProject) {
