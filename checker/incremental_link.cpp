@@ -15,6 +15,7 @@
 #include "checker/semantic/address_checker.hpp"
 #include "checker/semantic/configuration_checker.hpp"
 #include "checker/semantic/recursion_checker.hpp"
+#include "checker/symbols/names.hpp"
 
 namespace rung::check {
 namespace {
@@ -38,11 +39,6 @@ bool points_into(std::string_view key, std::string_view text) {
   return !text.empty() && key.data() >= text.data() && key.data() < text.data() + text.size();
 }
 
-bool is_word_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-         static_cast<unsigned char>(c) >= 0x80;
-}
-
 // FNV-1a over the upper-cased name: the case-insensitive identity of a word.
 uint32_t word_hash(std::string_view word) {
   uint32_t hash = 2166136261u;
@@ -53,12 +49,12 @@ uint32_t word_hash(std::string_view word) {
 std::vector<uint32_t> words_of(std::string_view text) {
   std::vector<uint32_t> words;
   for (size_t at = 0; at < text.size();) {
-    if (!is_word_char(text[at])) {
+    if (!is_identifier_char(text[at])) {
       ++at;
       continue;
     }
     const size_t begin = at;
-    while (at < text.size() && is_word_char(text[at])) ++at;
+    while (at < text.size() && is_identifier_char(text[at])) ++at;
     words.push_back(word_hash(text.substr(begin, at - begin)));
   }
   std::sort(words.begin(), words.end());

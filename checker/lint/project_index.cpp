@@ -2,15 +2,14 @@
 
 #include <algorithm>
 
+#include "checker/symbols/names.hpp"
+
 namespace rung::lint {
 namespace {
 
-bool is_word_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-         static_cast<unsigned char>(c) >= 0x80;  // identifiers may hold letters beyond ASCII
+bool is_word_start(char c) {
+  return check::is_identifier_char(c) && !(c >= '0' && c <= '9');
 }
-
-bool is_word_start(char c) { return is_word_char(c) && !(c >= '0' && c <= '9'); }
 
 }  // namespace
 
@@ -52,12 +51,12 @@ void ProjectIndex::read(const check::ProjectModel& model, check::SourceId id, Fi
   if (const SyntaxTree* tree = source.document->tree()) {
     const std::string_view text = tree->text();
     for (size_t at = 0; at < text.size();) {
-      if (!is_word_char(text[at])) {
+      if (!check::is_identifier_char(text[at])) {
         ++at;
         continue;
       }
       size_t end = at;
-      while (end < text.size() && is_word_char(text[end])) ++end;
+      while (end < text.size() && check::is_identifier_char(text[end])) ++end;
       if (is_word_start(text[at])) {
         if (at > 0 && text[at - 1] == '%' && (text[at] == 'Q' || text[at] == 'q')) entry.output_address = true;
         const std::string_view word = text.substr(at, end - at);

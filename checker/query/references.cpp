@@ -4,14 +4,10 @@
 
 #include "checker/query/position.hpp"
 #include "checker/query/resolve.hpp"
+#include "checker/symbols/names.hpp"
 
 namespace rung::check::query {
 namespace {
-
-bool is_identifier_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-         static_cast<unsigned char>(c) >= 0x80;  // identifiers may hold letters beyond ASCII
-}
 
 // Offsets of whole-word, case-insensitive occurrences of `name` in `text`: the cheap prefilter
 // that keeps the search fast on large projects (resolution runs on these only).

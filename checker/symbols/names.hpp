@@ -9,7 +9,16 @@
 
 namespace rung::check {
 
-constexpr char ascii_upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 32) : c; }
+constexpr char ascii_upper(char c) {
+  return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 32) : c;
+}
+
+// A byte that may stand in an identifier: ASCII letters, digits, '_', and any byte of a UTF-8
+// sequence (identifiers may hold letters beyond ASCII). For whole-word searches in source text.
+constexpr bool is_identifier_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         static_cast<unsigned char>(c) >= 0x80;
+}
 
 bool names_equal(std::string_view a, std::string_view b);
 std::string upper_name(std::string_view name);
