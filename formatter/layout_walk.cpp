@@ -256,7 +256,7 @@ class Walker {
  public:
   Walker(const SyntaxTree& tree, std::string_view text, const WalkOptions& options)
       : tree_(tree), text_(text), options_(options) {
-    condition_field_ = ts_language_field_id_for_name(tree_sitter_iec61131(), "condition", 9);
+    condition_field_ = NodeTable::field_id("condition");
   }
 
   WalkResult run() {
@@ -273,33 +273,22 @@ class Walker {
     top.block = true;
     stack_.push_back(top);
 
-    TSTreeCursor cursor = ts_tree_cursor_new(root.raw());
-    if (ts_tree_cursor_goto_first_child(&cursor)) {
-      while (true) {
-        TSNode raw = ts_tree_cursor_current_node(&cursor);
-        SyntaxNode node(raw, root.source());
-        const uint32_t children = ts_node_child_count(raw);
-        const bool pragma = children > 0 && ts_node_is_extra(raw) && symbol_info(node.symbol()).node == K::Pragma;
-        bool descended = false;
-        if (children == 0 || pragma) {
-          leaf(node);
-        } else {
-          enter(node, children, options_.collect_breaks ? ts_tree_cursor_current_field_id(&cursor) : TSFieldId{0});
-          descended = ts_tree_cursor_goto_first_child(&cursor);
-          if (!descended) pop();
-        }
-        if (descended) continue;
-        // Next sibling, or the next sibling of the nearest ancestor.
-        bool moved = false;
-        while (!(moved = ts_tree_cursor_goto_next_sibling(&cursor))) {
-          if (!ts_tree_cursor_goto_parent(&cursor)) break;
-          pop();
-          if (stack_.empty()) break;
-        }
-        if (!moved) break;
+    const NodeTable* table = root.table();
+    for (uint32_t i = root.index() + 1; i < root.subtree_end();) {
+      const SyntaxNode node(table, i);
+      // Leave the nodes whose subtrees ended (never the root's frame).
+      while (stack_.size() > 1 && stack_.back().node.subtree_end() <= i) pop();
+      const bool has_children = node.subtree_end() > i + 1;
+      const bool pragma = has_children && node.is_extra() && symbol_info(node.symbol()).node == K::Pragma;
+      if (!has_children || pragma) {
+        leaf(node);
+        i = node.subtree_end();
+      } else {
+        enter(node, node.child_count(), options_.collect_breaks ? node.field_id() : TSFieldId{0});
+        ++i;
       }
     }
-    ts_tree_cursor_delete(&cursor);
+    while (stack_.size() > 1) pop();
     return std::move(out_);
   }
 

@@ -109,27 +109,21 @@ bool VarBlock::has_qualifier(std::string_view qualifier) const {
 VarDeclaration::Parts VarDeclaration::parts() const {
   Parts parts;
   if (!node_) return parts;
-  TSTreeCursor cursor = ts_tree_cursor_new(node_.raw());
-  if (ts_tree_cursor_goto_first_child(&cursor)) {
-    do {
-      const SyntaxNode child(ts_tree_cursor_current_node(&cursor), node_.source());
-      const char* field = ts_tree_cursor_current_field_name(&cursor);
-      const std::string_view name = field ? field : "";
-      if (name == "name") {
-        parts.names.push_back(child);
-      } else if (name == "type" && !parts.type) {
-        parts.type = child;
-      } else if (name == "value" && !parts.initial_value) {
-        parts.initial_value = child;
-      } else if (name == "location" && !parts.location) {
-        parts.location = child;
-      } else if (name == "arguments" && !parts.init_arguments) {
-        parts.init_arguments = child;
-      }
-      if ((child.is_error() || child.is_missing()) && !parts.initial_value) parts.error_before_value = true;
-    } while (ts_tree_cursor_goto_next_sibling(&cursor));
-  }
-  ts_tree_cursor_delete(&cursor);
+  node_.for_each_child([&](SyntaxNode child) {
+    const std::string_view name = NodeTable::field_name(child.field_id());
+    if (name == "name") {
+      parts.names.push_back(child);
+    } else if (name == "type" && !parts.type) {
+      parts.type = child;
+    } else if (name == "value" && !parts.initial_value) {
+      parts.initial_value = child;
+    } else if (name == "location" && !parts.location) {
+      parts.location = child;
+    } else if (name == "arguments" && !parts.init_arguments) {
+      parts.init_arguments = child;
+    }
+    if ((child.is_error() || child.is_missing()) && !parts.initial_value) parts.error_before_value = true;
+  });
   return parts;
 }
 

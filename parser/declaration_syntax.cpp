@@ -78,31 +78,25 @@ class DeclarationChecker {
   void run() {
     SyntaxNode root = tree_.root();
     if (!root) return;
-    TSTreeCursor cursor = ts_tree_cursor_new(root.raw());
-    visit_children(&cursor, "source_file");
-    ts_tree_cursor_delete(&cursor);
+    visit_children(root, "source_file");
   }
 
  private:
-  // Visits the children of the cursor's node (of kind `parent`), and returns the cursor to it.
-  void visit_children(TSTreeCursor* cursor, std::string_view parent) {
-    if (!ts_tree_cursor_goto_first_child(cursor)) return;
-    bool declaring = one_of(kDeclaring, parent);
-    do {
-      SyntaxNode node(ts_tree_cursor_current_node(cursor), tree_.text());
-      if (node.is_error() || node.is_missing() || node.is_extra()) continue;
-      std::string_view kind = node.kind();
-      const char* field = ts_tree_cursor_current_field_name(cursor);
-      std::string_view field_name = field ? field : "";
+  // Visits the children of `node` (of kind `parent`), and the children of containers below.
+  void visit_children(SyntaxNode parent_node, std::string_view parent) {
+    const bool declaring = one_of(kDeclaring, parent);
+    parent_node.for_each_child([&](SyntaxNode node) {
+      if (node.is_error() || node.is_missing() || node.is_extra()) return;
+      const std::string_view kind = node.kind();
+      const std::string_view field_name = NodeTable::field_name(node.field_id());
       if (declaring && field_name == "name" && kind == "identifier") check_declared_name(node, parent);
       if (parent == "il_instruction" && field_name == "operator") check_il_operator(node);
       if (parent == "source_file" && kind == "expression_fragment") check_fragment(node);
       if (kind == "struct_type") check_struct_colon(node);
       // (a declaration line at top level may be an echo of error recovery)
       if (kind == "var_declaration" && parent != "source_file") check_declaration_has_name(node);
-      if (one_of(kContainers, kind)) visit_children(cursor, kind);
-    } while (ts_tree_cursor_goto_next_sibling(cursor));
-    ts_tree_cursor_goto_parent(cursor);
+      if (one_of(kContainers, kind)) visit_children(node, kind);
+    });
   }
 
   void check_declared_name(SyntaxNode name, std::string_view declaration) {

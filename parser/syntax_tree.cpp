@@ -5,119 +5,166 @@
 #include <unordered_map>
 #include <utility>
 
+#include "parser/node_table_reader.hpp"
+
 namespace rung {
 
 std::string_view SyntaxNode::text() const {
   if (is_null()) return {};
-  uint32_t b = std::min<uint32_t>(begin(), static_cast<uint32_t>(source_.size()));
-  uint32_t e = std::min<uint32_t>(end(), static_cast<uint32_t>(source_.size()));
-  return source_.substr(b, e - b);
+  const std::string_view source = table_->text;
+  const uint32_t size = static_cast<uint32_t>(source.size());
+  const uint32_t b = std::min(node().begin, size);
+  const uint32_t e = std::min(node().end, size);
+  return source.substr(b, e > b ? e - b : 0);
 }
 
-namespace {
-
-// Walks the children with a cursor: ts_node_child(i) restarts from the first child in the
-// tree-sitter 0.20 runtime, so index loops over a node's children are quadratic.
-template <typename Visit>
-void for_each_child(TSNode node, Visit visit) {
-  TSTreeCursor cursor = ts_tree_cursor_new(node);
-  if (ts_tree_cursor_goto_first_child(&cursor)) {
-    do {
-      if (!visit(cursor)) break;
-    } while (ts_tree_cursor_goto_next_sibling(&cursor));
-  }
-  ts_tree_cursor_delete(&cursor);
+std::string_view NodeTable::kind_name(TSSymbol symbol) {
+  static const std::vector<std::string_view> names = [] {
+    const TSLanguage* language = tree_sitter_iec61131();
+    std::vector<std::string_view> table(ts_language_symbol_count(language));
+    for (uint32_t id = 0; id < table.size(); ++id) {
+      const char* name = ts_language_symbol_name(language, static_cast<TSSymbol>(id));
+      table[id] = name ? std::string_view(name) : std::string_view();
+    }
+    return table;
+  }();
+  if (symbol < names.size()) return names[symbol];
+  // ERROR and the runtime's other built-in symbols are not in the grammar's table.
+  const char* name = ts_language_symbol_name(tree_sitter_iec61131(), symbol);
+  return name ? std::string_view(name) : std::string_view();
 }
 
-// The grammar's id of a field name, 0 if it has no such field. Children are matched by id: the
-// name compare (a strlen per child) showed up in profiles of the symbol pass.
-TSFieldId field_id(std::string_view field) {
+// Fields are matched by id, and the name lookup is one hash: it runs on every child_by_field().
+TSFieldId NodeTable::field_id(std::string_view name) {
   static const std::unordered_map<std::string_view, TSFieldId> ids = [] {
     std::unordered_map<std::string_view, TSFieldId> out;
     const TSLanguage* language = tree_sitter_iec61131();
     const uint32_t count = ts_language_field_count(language);
     for (uint32_t id = 1; id <= count; ++id) {
-      if (const char* name = ts_language_field_name_for_id(language, static_cast<TSFieldId>(id))) {
-        out.emplace(name, static_cast<TSFieldId>(id));
+      if (const char* field = ts_language_field_name_for_id(language, static_cast<TSFieldId>(id))) {
+        out.emplace(field, static_cast<TSFieldId>(id));
       }
     }
     return out;
   }();
-  const auto found = ids.find(field);
+  const auto found = ids.find(name);
   return found == ids.end() ? TSFieldId{0} : found->second;
 }
 
-}  // namespace
-
-SyntaxNode SyntaxNode::child_by_field(std::string_view field) const {
-  SyntaxNode found;
-  const TSFieldId id = field_id(field);
-  if (id == 0) return found;
-  for_each_child(node_, [&](const TSTreeCursor& cursor) {
-    if (ts_tree_cursor_current_field_id(&cursor) == id) found = wrap(ts_tree_cursor_current_node(&cursor));
-    return !found;
-  });
-  return found;
+std::string_view NodeTable::field_name(TSFieldId id) {
+  if (id == 0) return {};
+  const char* name = ts_language_field_name_for_id(tree_sitter_iec61131(), id);
+  return name ? std::string_view(name) : std::string_view();
 }
 
-// Field names come from a tree cursor: ts_node_field_name_for_child of the tree-sitter 0.20
-// runtime (Debian 12) misattributes fields when hidden or extra nodes precede a child.
-std::string_view SyntaxNode::field_name_of_child(uint32_t index) const {
-  TSTreeCursor cursor = ts_tree_cursor_new(node_);
-  std::string_view name;
-  if (ts_tree_cursor_goto_first_child(&cursor)) {
-    for (uint32_t i = 0; i < index; ++i) {
-      if (!ts_tree_cursor_goto_next_sibling(&cursor)) {
-        ts_tree_cursor_delete(&cursor);
-        return {};
-      }
-    }
-    const char* field = ts_tree_cursor_current_field_name(&cursor);
-    if (field) name = field;
+uint32_t SyntaxNode::count_children(bool named_only) const {
+  uint32_t count = 0;
+  for_each_child([&](SyntaxNode child) { count += !named_only || child.is_named() ? 1 : 0; });
+  return count;
+}
+
+SyntaxNode SyntaxNode::nth_child(uint32_t index, bool named_only) const {
+  if (is_null()) return {};
+  const auto& nodes = table_->nodes;
+  uint32_t seen = 0;
+  for (uint32_t c = index_ + 1; c < nodes[index_].subtree_end; c = nodes[c].subtree_end) {
+    if ((!named_only || (nodes[c].flags & NodeTable::kNamed) != 0) && seen++ == index) return at(c);
   }
-  ts_tree_cursor_delete(&cursor);
-  return name;
+  return {};
+}
+
+SyntaxNode SyntaxNode::child_by_field_id(TSFieldId field) const {
+  if (is_null() || field == 0) return {};
+  const auto& nodes = table_->nodes;
+  for (uint32_t c = index_ + 1; c < nodes[index_].subtree_end; c = nodes[c].subtree_end) {
+    if (nodes[c].field == field) return at(c);
+  }
+  return {};
 }
 
 std::vector<SyntaxNode> SyntaxNode::children_by_field(std::string_view field) const {
   std::vector<SyntaxNode> out;
-  const TSFieldId id = field_id(field);
+  const TSFieldId id = NodeTable::field_id(field);
   if (id == 0) return out;
-  for_each_child(node_, [&](const TSTreeCursor& cursor) {
-    if (ts_tree_cursor_current_field_id(&cursor) == id) out.push_back(wrap(ts_tree_cursor_current_node(&cursor)));
-    return true;
+  for_each_child([&](SyntaxNode child) {
+    if (child.node().field == id) out.push_back(child);
   });
   return out;
 }
 
+std::string_view SyntaxNode::field_name_of_child(uint32_t index) const {
+  return NodeTable::field_name(child(index).field_id());
+}
+
 std::vector<SyntaxNode> SyntaxNode::children_of_kind(std::string_view kind) const {
   std::vector<SyntaxNode> out;
-  for_each_child(node_, [&](const TSTreeCursor& cursor) {
-    TSNode child = ts_tree_cursor_current_node(&cursor);
-    if (ts_node_is_named(child) && kind == ts_node_type(child)) out.push_back(wrap(child));
-    return true;
+  for_each_child([&](SyntaxNode child) {
+    if (child.is_named() && child.kind() == kind) out.push_back(child);
   });
   return out;
 }
 
 std::vector<SyntaxNode> SyntaxNode::named_children() const {
   std::vector<SyntaxNode> out;
-  for_each_child(node_, [&](const TSTreeCursor& cursor) {
-    TSNode child = ts_tree_cursor_current_node(&cursor);
-    if (ts_node_is_named(child)) out.push_back(wrap(child));
-    return true;
+  for_each_child([&](SyntaxNode child) {
+    if (child.is_named()) out.push_back(child);
   });
   return out;
 }
 
 SyntaxNode SyntaxNode::first_child_of_kind(std::string_view kind) const {
-  SyntaxNode found;
-  for_each_child(node_, [&](const TSTreeCursor& cursor) {
-    TSNode child = ts_tree_cursor_current_node(&cursor);
-    if (ts_node_is_named(child) && kind == ts_node_type(child)) found = wrap(child);
-    return !found;
-  });
-  return found;
+  if (is_null()) return {};
+  const auto& nodes = table_->nodes;
+  for (uint32_t c = index_ + 1; c < nodes[index_].subtree_end; c = nodes[c].subtree_end) {
+    if ((nodes[c].flags & NodeTable::kNamed) != 0 && NodeTable::kind_name(nodes[c].symbol) == kind) return at(c);
+  }
+  return {};
+}
+
+SyntaxNode SyntaxNode::parent() const {
+  return is_null() ? SyntaxNode() : at(node().parent);
+}
+
+SyntaxNode SyntaxNode::next_sibling() const {
+  if (is_null() || node().parent == NodeTable::kNone) return {};
+  const uint32_t next = node().subtree_end;
+  return next < table_->nodes[node().parent].subtree_end ? at(next) : SyntaxNode();
+}
+
+SyntaxNode SyntaxNode::prev_sibling() const {
+  if (is_null() || node().parent == NodeTable::kNone) return {};
+  const auto& nodes = table_->nodes;
+  uint32_t previous = NodeTable::kNone;
+  for (uint32_t c = node().parent + 1; c < index_; c = nodes[c].subtree_end) previous = c;
+  return at(previous);
+}
+
+SyntaxNode SyntaxNode::next_named_sibling() const {
+  SyntaxNode next = next_sibling();
+  while (next && !next.is_named()) next = next.next_sibling();
+  return next;
+}
+
+// The descent of tree-sitter's ts_node_descendant_for_byte_range, over the visible nodes: take the
+// first child that reaches past the range's end (and past its start) and starts at or before its
+// start; the answer is the deepest such node (named, when asked).
+SyntaxNode SyntaxNode::descendant(uint32_t range_begin, uint32_t range_end, bool named_only) const {
+  if (is_null()) return {};
+  const auto& nodes = table_->nodes;
+  uint32_t current = index_;
+  uint32_t answer = index_;
+  for (bool descended = true; descended;) {
+    descended = false;
+    for (uint32_t c = current + 1; c < nodes[current].subtree_end; c = nodes[c].subtree_end) {
+      if (nodes[c].end < range_end || nodes[c].end <= range_begin) continue;
+      if (range_begin < nodes[c].begin) break;
+      current = c;
+      if (!named_only || (nodes[c].flags & NodeTable::kNamed) != 0) answer = c;
+      descended = true;
+      break;
+    }
+  }
+  return at(answer);
 }
 
 namespace {
@@ -156,42 +203,68 @@ TSPoint advance_point(TSPoint start, std::string_view inserted) {
 
 }  // namespace
 
+namespace {
+
+// One parser per thread, reused for every parse: a parser owns stacks and a lexer of its own.
+TSParser* thread_parser() {
+  struct Owner {
+    TSParser* parser = ts_parser_new();
+    Owner() { ts_parser_set_language(parser, tree_sitter_iec61131()); }
+    ~Owner() { ts_parser_delete(parser); }
+    Owner(const Owner&) = delete;
+    Owner& operator=(const Owner&) = delete;
+  };
+  thread_local Owner owner;
+  return owner.parser;
+}
+
+}  // namespace
+
 SyntaxTree SyntaxTree::parse(std::string text, Options options) {
+  static_assert(sizeof(NodeTable::Node) == 20, "a node table entry is 20 bytes");
   SyntaxTree tree;
-  tree.text_ = std::move(text);
+  tree.table_ = std::make_unique<NodeTable>();
+  tree.table_->text = std::move(text);
   tree.options_ = options;
-  tree.parser_ = ts_parser_new();
-  ts_parser_set_language(tree.parser_, tree_sitter_iec61131());
-  tree.reparse(nullptr);
+  TSTree* parsed = tree.parse_text(nullptr);
+  if (parsed) read_node_table(parsed, *tree.table_);
+  tree.keep_or_delete(parsed);
   return tree;
 }
 
-void SyntaxTree::reparse(const TSTree* old_tree) {
+TSTree* SyntaxTree::parse_text(const TSTree* old_tree) const {
+  const std::string& text = table_->text;
   uint64_t timeout = options_.timeout_micros;
   if (timeout == 0) {
-    // Generous: a healthy parse runs at tens of MB/s; this budget only stops pathological cases.
-    timeout = 2'000'000 + static_cast<uint64_t>(text_.size()) * 2;
+    // Generous: a healthy parse runs at several MB/s; this budget only stops pathological cases.
+    timeout = 2'000'000 + static_cast<uint64_t>(text.size()) * 2;
   }
-  ts_parser_set_timeout_micros(parser_, timeout);
-  ts_parser_reset(parser_);
-  TSTree* fresh = ts_parser_parse_string(parser_, old_tree, text_.data(), static_cast<uint32_t>(text_.size()));
-  if (tree_ && tree_ != fresh) ts_tree_delete(tree_);
-  tree_ = fresh;
+  TSParser* parser = thread_parser();
+  ts_parser_set_timeout_micros(parser, timeout);
+  ts_parser_reset(parser);
+  TSTree* parsed = ts_parser_parse_string(parser, old_tree, text.data(), static_cast<uint32_t>(text.size()));
+  ts_parser_reset(parser);  // a timed-out parse must not resume on the next text
+  return parsed;
+}
+
+void SyntaxTree::keep_or_delete(TSTree* parsed) {
+  if (parsed && options_.keep_parse_tree) {
+    tree_ = parsed;
+  } else if (parsed) {
+    ts_tree_delete(parsed);
+  }
 }
 
 SyntaxTree::SyntaxTree(SyntaxTree&& other) noexcept
-    : text_(std::move(other.text_)),
-      options_(other.options_),
-      parser_(std::exchange(other.parser_, nullptr)),
-      tree_(std::exchange(other.tree_, nullptr)) {}
+    : table_(std::move(other.table_)), options_(other.options_), tree_(std::exchange(other.tree_, nullptr)) {
+  other.table_ = std::make_unique<NodeTable>();
+}
 
 SyntaxTree& SyntaxTree::operator=(SyntaxTree&& other) noexcept {
   if (this != &other) {
     if (tree_) ts_tree_delete(tree_);
-    if (parser_) ts_parser_delete(parser_);
-    text_ = std::move(other.text_);
+    table_ = std::exchange(other.table_, std::make_unique<NodeTable>());
     options_ = other.options_;
-    parser_ = std::exchange(other.parser_, nullptr);
     tree_ = std::exchange(other.tree_, nullptr);
   }
   return *this;
@@ -199,16 +272,16 @@ SyntaxTree& SyntaxTree::operator=(SyntaxTree&& other) noexcept {
 
 SyntaxTree::~SyntaxTree() {
   if (tree_) ts_tree_delete(tree_);
-  if (parser_) ts_parser_delete(parser_);
 }
 
 SyntaxNode SyntaxTree::root() const {
-  if (!tree_) return {};
-  return SyntaxNode(ts_tree_root_node(tree_), text_);
+  if (aborted()) return {};
+  return SyntaxNode(table_.get(), 0);
 }
 
 std::vector<TextRange> SyntaxTree::apply_edit(uint32_t begin, uint32_t end, std::string_view replacement) {
-  uint32_t size = static_cast<uint32_t>(text_.size());
+  std::string& text = table_->text;
+  const uint32_t size = static_cast<uint32_t>(text.size());
   begin = std::min(begin, size);
   end = std::clamp(end, begin, size);
 
@@ -216,40 +289,42 @@ std::vector<TextRange> SyntaxTree::apply_edit(uint32_t begin, uint32_t end, std:
   edit.start_byte = begin;
   edit.old_end_byte = end;
   edit.new_end_byte = begin + static_cast<uint32_t>(replacement.size());
-  edit.start_point = point_at(text_, begin);
-  edit.old_end_point = point_at(text_, end);
+  edit.start_point = point_at(text, begin);
+  edit.old_end_point = point_at(text, end);
   edit.new_end_point = advance_point(edit.start_point, replacement);
 
-  text_.replace(begin, end - begin, replacement);
+  text.replace(begin, end - begin, replacement);
 
   std::vector<TextRange> changed;
-  if (!tree_) {
-    reparse(nullptr);
-    if (tree_) changed.push_back({0, static_cast<uint32_t>(text_.size())});
-    return changed;
-  }
-  TSTree* old_tree = tree_;
-  ts_tree_edit(old_tree, &edit);
-  tree_ = nullptr;
-  reparse(old_tree);
-  if (tree_) {
+  TSTree* old_tree = std::exchange(tree_, nullptr);
+  if (old_tree) ts_tree_edit(old_tree, &edit);
+  TSTree* parsed = parse_text(old_tree);
+  if (!parsed) {
+    table_->nodes.clear();  // timed out: no tree, and nothing to compare with
+  } else if (old_tree) {
     uint32_t count = 0;
-    TSRange* ranges = ts_tree_get_changed_ranges(old_tree, tree_, &count);
+    TSRange* ranges = ts_tree_get_changed_ranges(old_tree, parsed, &count);
     for (uint32_t i = 0; i < count; ++i) changed.push_back({ranges[i].start_byte, ranges[i].end_byte});
-    free(ranges);
+    free(ranges);  // NOLINT(cppcoreguidelines-no-malloc): tree-sitter allocates the ranges with malloc
+    if (!splice_node_table(*table_, parsed, edit, changed)) read_node_table(parsed, *table_);
     // An edit inside one token changes no structure; the token's own range still changed.
     if (changed.empty()) changed.push_back({begin, edit.new_end_byte});
+  } else {
+    read_node_table(parsed, *table_);
+    changed.push_back({0, static_cast<uint32_t>(text.size())});  // no old tree to compare with
   }
-  ts_tree_delete(old_tree);
+  keep_or_delete(parsed);
+  if (old_tree) ts_tree_delete(old_tree);
   return changed;
 }
 
 void SyntaxTree::for_each_token(const std::function<void(const Token&)>& visit) const {
+  const std::string& text = table_->text;
+  const uint32_t size = static_cast<uint32_t>(text.size());
   uint32_t cursor_offset = 0;
-  const uint32_t size = static_cast<uint32_t>(text_.size());
   auto is_blank = [&](uint32_t from, uint32_t to) {
     for (uint32_t i = from; i < to; ++i) {
-      char c = text_[i];
+      const char c = text[i];
       if (c != ' ' && c != '\t' && c != '\r' && c != '\n' && c != '\f' && c != '\v') return false;
     }
     return true;
@@ -257,51 +332,39 @@ void SyntaxTree::for_each_token(const std::function<void(const Token&)>& visit) 
   // Bytes no leaf covers are whitespace, or text an ERROR node skipped without making tokens.
   auto emit_gap = [&](uint32_t upto) {
     if (upto > cursor_offset) {
-      Token::Kind k = is_blank(cursor_offset, upto) ? Token::Kind::Whitespace : Token::Kind::Error;
+      const Token::Kind k = is_blank(cursor_offset, upto) ? Token::Kind::Whitespace : Token::Kind::Error;
       visit(Token{k, {cursor_offset, upto}, {}});
       cursor_offset = upto;
     }
   };
-  if (tree_) {
-    TSTreeCursor cursor = ts_tree_cursor_new(ts_tree_root_node(tree_));
-    // Iterative pre-order walk: deep trees (thousands of nested parentheses) must not recurse.
-    bool descending = true;
-    while (true) {
-      TSNode node = ts_tree_cursor_current_node(&cursor);
-      if (descending) {
-        bool leaf = ts_node_child_count(node) == 0;
-        std::string_view kind = ts_node_type(node);
-        bool trivia_leaf = ts_node_is_extra(node) &&
-                           (kind == "comment" || kind == "pragma" || kind == "line_comment" || kind == "block_comment");
-        if (leaf || trivia_leaf) {
-          uint32_t b = std::min(ts_node_start_byte(node), size);
-          uint32_t e = std::min(ts_node_end_byte(node), size);
-          if (e > b && b >= cursor_offset) {
-            emit_gap(b);
-            Token::Kind k = Token::Kind::Token;
-            if (ts_node_is_extra(node) && kind.find("comment") != std::string_view::npos)
-              k = Token::Kind::Comment;
-            else if (ts_node_is_extra(node) && kind.find("pragma") != std::string_view::npos)
-              k = Token::Kind::Pragma;
-            else if (ts_node_symbol(node) == static_cast<TSSymbol>(-1))
-              k = Token::Kind::Error;
-            visit(Token{k, {b, e}, kind});
-            cursor_offset = e;
-          }
-          descending = false;
-          continue;
-        }
-        if (ts_tree_cursor_goto_first_child(&cursor)) continue;
-        descending = false;
-        continue;
-      }
-      if (ts_tree_cursor_goto_next_sibling(&cursor)) {
-        descending = true;
-        continue;
-      }
-      if (!ts_tree_cursor_goto_parent(&cursor)) break;
+  const auto& nodes = table_->nodes;
+  for (uint32_t i = 0; i < nodes.size();) {
+    const NodeTable::Node& node = nodes[i];
+    const bool leaf = node.subtree_end == i + 1;
+    const bool extra = (node.flags & NodeTable::kExtra) != 0;
+    const std::string_view kind = NodeTable::kind_name(node.symbol);
+    const bool trivia_leaf =
+        extra && (kind == "comment" || kind == "pragma" || kind == "line_comment" || kind == "block_comment");
+    if (!leaf && !trivia_leaf) {
+      ++i;
+      continue;
     }
-    ts_tree_cursor_delete(&cursor);
+    const uint32_t b = std::min(node.begin, size);
+    const uint32_t e = std::min(node.end, size);
+    if (e > b && b >= cursor_offset) {
+      emit_gap(b);
+      Token::Kind k = Token::Kind::Token;
+      if (extra && kind.find("comment") != std::string_view::npos) {
+        k = Token::Kind::Comment;
+      } else if (extra && kind.find("pragma") != std::string_view::npos) {
+        k = Token::Kind::Pragma;
+      } else if (node.symbol == NodeTable::kErrorSymbol) {
+        k = Token::Kind::Error;
+      }
+      visit(Token{k, {b, e}, kind});
+      cursor_offset = e;
+    }
+    i = node.subtree_end;
   }
   emit_gap(size);
 }

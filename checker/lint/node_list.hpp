@@ -1,10 +1,9 @@
-// A file's syntax tree as one flat array of nodes in preorder, built with one tree-cursor walk.
+// A file's syntax tree as the lint rules read it: the tree's node table (parser/syntax_tree.hpp),
+// addressed by index.
 //
-// Every lint rule looks at the same trees: walking one with a tree cursor costs about 90 ns per
-// node, and 44 rules walking 1.6 million nodes each spent seconds doing only that. The array is
-// built once per file (LintContext::nodes()) and walked in a few nanoseconds per node: a node's
-// subtree is the range [i, subtree_end(i)), so skipping it is one assignment. Nodes are named by
-// index; node(i) gives the SyntaxNode for the questions the array does not answer.
+// The nodes are in preorder and a node's subtree is the range [i, subtree_end(i)), so walking is
+// a loop over indices and skipping a subtree one assignment; 44 rules walk every file. Nodes are
+// named by index; node(i) gives the SyntaxNode for the questions the index API does not answer.
 #pragma once
 
 #include <tree_sitter/api.h>
@@ -19,49 +18,46 @@ namespace rung::lint {
 
 class NodeList {
  public:
-  static constexpr uint32_t kNone = UINT32_MAX;
+  static constexpr uint32_t kNone = NodeTable::kNone;
 
   NodeList() = default;  // no tree: no nodes
-  // Every node of `root`'s tree below and including `root`, anonymous tokens and extras too (the
-  // nodes walk_preorder visits, in its order).
-  explicit NodeList(SyntaxNode root);
+  // Every node of the tree `root` is the root of (anonymous tokens and extras too), in the order
+  // walk_preorder visits them. The list reads the tree's table: it must not outlive the tree.
+  explicit NodeList(SyntaxNode root) : table_(root ? root.table() : nullptr) {}
 
-  uint32_t size() const { return static_cast<uint32_t>(entries_.size()); }
-  bool empty() const { return entries_.empty(); }
+  uint32_t size() const { return table_ ? static_cast<uint32_t>(table_->nodes.size()) : 0; }
+  bool empty() const { return size() == 0; }
 
   // The node itself (a null node for kNone).
-  SyntaxNode node(uint32_t i) const { return i < size() ? SyntaxNode(entries_[i].raw, source_) : SyntaxNode(); }
-  std::string_view kind(uint32_t i) const {
-    const TSSymbol symbol = entries_[i].symbol;
-    return symbol < names_size_ ? names_[symbol] : rare_kind(symbol);
-  }
-  uint32_t begin(uint32_t i) const { return entries_[i].begin; }
-  uint32_t end(uint32_t i) const { return entries_[i].end; }
-  TextRange range(uint32_t i) const { return {entries_[i].begin, entries_[i].end}; }
-  std::string_view text(uint32_t i) const { return source_.substr(begin(i), end(i) - begin(i)); }
+  SyntaxNode node(uint32_t i) const { return i < size() ? SyntaxNode(table_, i) : SyntaxNode(); }
+  std::string_view kind(uint32_t i) const { return NodeTable::kind_name(at(i).symbol); }
+  uint32_t begin(uint32_t i) const { return at(i).begin; }
+  uint32_t end(uint32_t i) const { return at(i).end; }
+  TextRange range(uint32_t i) const { return {at(i).begin, at(i).end}; }
+  std::string_view text(uint32_t i) const { return std::string_view(table_->text).substr(begin(i), end(i) - begin(i)); }
 
-  bool is_named(uint32_t i) const { return entries_[i].flags & kNamed; }
-  bool is_extra(uint32_t i) const { return entries_[i].flags & kExtra; }
-  bool is_missing(uint32_t i) const { return entries_[i].flags & kMissing; }
-  bool has_error(uint32_t i) const { return entries_[i].flags & kHasError; }
-  bool is_error(uint32_t i) const { return entries_[i].symbol == static_cast<TSSymbol>(-1); }
+  bool is_named(uint32_t i) const { return (at(i).flags & NodeTable::kNamed) != 0; }
+  bool is_extra(uint32_t i) const { return (at(i).flags & NodeTable::kExtra) != 0; }
+  bool is_missing(uint32_t i) const { return (at(i).flags & NodeTable::kMissing) != 0; }
+  bool has_error(uint32_t i) const { return (at(i).flags & NodeTable::kHasError) != 0; }
+  bool is_error(uint32_t i) const { return at(i).symbol == NodeTable::kErrorSymbol; }
   // Whether the node has children (SyntaxNode::child_count() > 0).
-  bool has_children(uint32_t i) const { return entries_[i].subtree_end > i + 1; }
+  bool has_children(uint32_t i) const { return at(i).subtree_end > i + 1; }
 
   // One past the node's last descendant: [i, subtree_end(i)) is its subtree.
-  uint32_t subtree_end(uint32_t i) const { return entries_[i].subtree_end; }
+  uint32_t subtree_end(uint32_t i) const { return at(i).subtree_end; }
   // The parent's index; kNone for the first node.
-  uint32_t parent(uint32_t i) const { return entries_[i].parent; }
+  uint32_t parent(uint32_t i) const { return at(i).parent; }
   // The field the node hangs under in its parent (0: none), as the tree cursor reports it.
-  TSFieldId field(uint32_t i) const { return entries_[i].field; }
+  TSFieldId field(uint32_t i) const { return at(i).field; }
 
   // The index of `node`, a node of this tree; kNone when it is not in the list.
-  uint32_t index_of(SyntaxNode node) const;
+  uint32_t index_of(SyntaxNode node) const { return node && node.table() == table_ ? node.index() : kNone; }
   // The first child of `i` under `field` (an id from field_id()); kNone if none.
   uint32_t child_by_field(uint32_t i, TSFieldId field) const {
     if (field == 0 || i >= size()) return kNone;
-    for (uint32_t child = i + 1; child < entries_[i].subtree_end; child = entries_[child].subtree_end) {
-      if (entries_[child].field == field) return child;
+    for (uint32_t child = i + 1; child < subtree_end(i); child = subtree_end(child)) {
+      if (at(child).field == field) return child;
     }
     return kNone;
   }
@@ -69,19 +65,19 @@ class NodeList {
   // The first named child of `i` of `kind`; kNone if none.
   uint32_t first_child_of_kind(uint32_t i, std::string_view kind) const {
     if (i >= size()) return kNone;
-    for (uint32_t child = i + 1; child < entries_[i].subtree_end; child = entries_[child].subtree_end) {
+    for (uint32_t child = i + 1; child < subtree_end(i); child = subtree_end(child)) {
       if (is_named(child) && this->kind(child) == kind) return child;
     }
     return kNone;
   }
 
   // The grammar's id of a field name ("condition"); 0 for an unknown name.
-  static TSFieldId field_id(std::string_view name);
+  static TSFieldId field_id(std::string_view name) { return NodeTable::field_id(name); }
 
   // Calls visit(child) for each child of `i` in order.
   template <typename Visit>
   void for_each_child(uint32_t i, Visit&& visit) const {
-    for (uint32_t child = i + 1; child < entries_[i].subtree_end; child = entries_[child].subtree_end) visit(child);
+    for (uint32_t child = i + 1; child < subtree_end(i); child = subtree_end(child)) visit(child);
   }
 
   // Calls enter(i) for `from` and the nodes below it in preorder; enter returns whether to visit
@@ -89,30 +85,14 @@ class NodeList {
   template <typename Enter>
   void walk(uint32_t from, Enter&& enter) const {
     if (from >= size()) return;
-    const uint32_t stop = entries_[from].subtree_end;
-    for (uint32_t i = from; i < stop;) i = enter(i) ? i + 1 : entries_[i].subtree_end;
+    const uint32_t stop = subtree_end(from);
+    for (uint32_t i = from; i < stop;) i = enter(i) ? i + 1 : subtree_end(i);
   }
 
  private:
-  enum Flag : uint8_t { kNamed = 1, kExtra = 2, kMissing = 4, kHasError = 8 };
-  struct Entry {
-    TSNode raw;
-    uint32_t begin = 0;
-    uint32_t end = 0;
-    uint32_t subtree_end = 0;
-    uint32_t parent = kNone;
-    TSSymbol symbol = 0;
-    TSFieldId field = 0;
-    uint8_t flags = 0;
-  };
+  const NodeTable::Node& at(uint32_t i) const { return table_->nodes[i]; }
 
-  static std::string_view rare_kind(TSSymbol symbol);
-
-  std::vector<Entry> entries_;
-  std::string_view source_;
-  const std::string_view* names_ = nullptr;  // kind names by symbol (the grammar's table)
-  TSSymbol names_size_ = 0;
-  bool sorted_ = true;  // begins never decrease in preorder (index_of may binary-search)
+  const NodeTable* table_ = nullptr;
 };
 
 // The operator of the expression node `i` as written ("AND_THEN", "and", "<>"): its child under

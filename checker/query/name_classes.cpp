@@ -82,8 +82,8 @@ uint16_t flags_of(const ProjectModel& model, const Symbol& symbol) {
 // Names inside these never refer to a declaration: not worth resolving.
 bool holds_no_names(std::string_view kind) {
   return kind == "comment" || kind == "pragma" || kind == "string_literal" || kind == "integer_literal" ||
-         kind == "real_literal" || kind == "time_literal" || kind == "date_literal" ||
-         kind == "time_of_day_literal" || kind == "date_and_time_literal" || kind == "direct_variable";
+         kind == "real_literal" || kind == "time_literal" || kind == "date_literal" || kind == "time_of_day_literal" ||
+         kind == "date_and_time_literal" || kind == "direct_variable";
 }
 
 // The file range of a name of the tree text; nullopt when a container reader inserted it (it has
@@ -124,30 +124,18 @@ class NameWalker {
 
  private:
   void walk(SyntaxNode root) {
-    TSTreeCursor cursor = ts_tree_cursor_new(root.raw());
-    const auto current = [&] { return SyntaxNode(ts_tree_cursor_current_node(&cursor), root.source()); };
-    const auto field = [&] {
-      const char* name = ts_tree_cursor_current_field_name(&cursor);
-      return name ? std::string_view(name) : std::string_view();
-    };
-    bool descend = enter(current(), field());
-    while (!stop_) {
-      if (descend) {
-        const SyntaxNode node = current();
-        if (ts_tree_cursor_goto_first_child(&cursor)) {
-          ancestors_.push_back(node);
-          descend = enter(current(), field());
-          continue;
-        }
+    const NodeTable* table = root.table();
+    const uint32_t stop = root.subtree_end();
+    for (uint32_t i = root.index(); i < stop && !stop_;) {
+      const SyntaxNode node(table, i);
+      while (!ancestors_.empty() && ancestors_.back().subtree_end() <= i) ancestors_.pop_back();
+      if (enter(node, NodeTable::field_name(node.field_id())) && node.subtree_end() > i + 1) {
+        ancestors_.push_back(node);
+        ++i;
+      } else {
+        i = node.subtree_end();
       }
-      bool moved = false;
-      while (!(moved = ts_tree_cursor_goto_next_sibling(&cursor)) && ts_tree_cursor_goto_parent(&cursor)) {
-        ancestors_.pop_back();
-      }
-      if (!moved) break;
-      descend = enter(current(), field());
     }
-    ts_tree_cursor_delete(&cursor);
   }
 
   // Whether to walk the node's children.
@@ -188,8 +176,7 @@ class NameWalker {
     std::optional<ClassifiedName> classified = classify_symbol(model_, *symbol);
     if (!classified) return;
     classified->range = *range;
-    if (symbol->source == source_ && symbol->name_range.begin == name.begin() &&
-        symbol->name_range.end == name.end()) {
+    if (symbol->source == source_ && symbol->name_range.begin == name.begin() && symbol->name_range.end == name.end()) {
       classified->flags |= kNameDeclaration;
     }
     names_.push_back(*classified);

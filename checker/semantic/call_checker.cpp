@@ -33,7 +33,9 @@ std::vector<Parameter> parameters_of(const Symbol* callee) {
   return parameters;
 }
 
-bool is_en_eno(std::string_view name) { return names_equal(name, "EN") || names_equal(name, "ENO"); }
+bool is_en_eno(std::string_view name) {
+  return names_equal(name, "EN") || names_equal(name, "ENO");
+}
 
 // The parameter a formal argument names; for standard functions also by the name a vendor gives
 // it (the stubs' rung.alias: CODESYS's LEFT(STR, SIZE) is IEC's LEFT(IN, L)).
@@ -142,9 +144,9 @@ ExprInfo BodyChecker::type_call(SyntaxNode call, int depth) {
       std::vector<std::string_view> candidates = model_.visible_names(&pou_);
       const std::string_view suggestion = closest_name(name, candidates);
       report(codes::kUnknownLibraryName, fmt::format("unknown function or function block '{}'", name), function.range(),
-             suggestion.empty()
-                 ? "declare it, or if it comes from a vendor library, add that library's stubs (the 'libraries' list under [project] in rung.toml)"
-                 : fmt::format("did you mean '{}'?", suggestion));
+             suggestion.empty() ? "declare it, or if it comes from a vendor library, add that library's stubs (the "
+                                  "'libraries' list under [project] in rung.toml)"
+                                : fmt::format("did you mean '{}'?", suggestion));
       return unknown;
     }
     if (callee->has(kObsolete)) info_for_symbol(callee, function);
@@ -152,12 +154,11 @@ ExprInfo BodyChecker::type_call(SyntaxNode call, int depth) {
       case SymbolKind::Function:
       case SymbolKind::Method:
       case SymbolKind::Action:
-      case SymbolKind::Program:
-        return check_call_arguments(call, callee, false, depth);
+      case SymbolKind::Program: return check_call_arguments(call, callee, false, depth);
       case SymbolKind::FunctionBlock:
       case SymbolKind::Class:
-        report(codes::kNotCallable,
-               fmt::format("'{}' is a function block type; call an instance of it", callee->name), function.range(),
+        report(codes::kNotCallable, fmt::format("'{}' is a function block type; call an instance of it", callee->name),
+               function.range(),
                fmt::format("declare an instance (e.g. fb{} : {};) and call that", callee->name, callee->name));
         // The arguments are still checked against the block's parameters, as the instance call
         // the author meant would be.
@@ -170,23 +171,22 @@ ExprInfo BodyChecker::type_call(SyntaxNode call, int depth) {
           return check_call_arguments(call, type->declaration, true, depth);
         }
         if (!type->is_unknown() && type->kind != TypeKind::Pointer && type->kind != TypeKind::Generic) {
-          report(codes::kNotCallable, fmt::format("'{}' is a variable of type {}, not something to call", name, type->name),
+          report(codes::kNotCallable,
+                 fmt::format("'{}' is a variable of type {}, not something to call", name, type->name),
                  function.range());
         }
         type_arguments_only();
         return unknown;
       }
-      default:
-        type_arguments_only();
-        return unknown;
+      default: type_arguments_only(); return unknown;
     }
   }
   // obj.Method(), fbInstance.Action(), GVL.fb(), Library.F(), a[i](), p^()
   ExprInfo target = type_expression(function, depth + 1);
   if (target.symbol) {
     const Symbol* callee = target.symbol;
-    if (callee->kind == SymbolKind::Method || callee->kind == SymbolKind::Action || callee->kind == SymbolKind::Function ||
-        callee->kind == SymbolKind::Program) {
+    if (callee->kind == SymbolKind::Method || callee->kind == SymbolKind::Action ||
+        callee->kind == SymbolKind::Function || callee->kind == SymbolKind::Program) {
       return check_call_arguments(call, callee, false, depth);
     }
   }
@@ -207,16 +207,13 @@ std::vector<CallArgument> call_arguments(SyntaxNode arguments) {
   std::vector<CallArgument> result;
   if (!arguments) return result;
   bool after_bar = false;
-  // One cursor over the children: child(i) starts over from the first child for every i.
-  TSTreeCursor cursor = ts_tree_cursor_new(arguments.raw());
-  for (bool more = ts_tree_cursor_goto_first_child(&cursor); more; more = ts_tree_cursor_goto_next_sibling(&cursor)) {
-    const SyntaxNode child(ts_tree_cursor_current_node(&cursor), arguments.source());
+  arguments.for_each_child([&](SyntaxNode child) {
     if (!child.is_named()) {
       after_bar = after_bar || child.text() == "|";
-      continue;
+      return;
     }
     const bool output = child.kind() == "output_argument";
-    if (!output && child.kind() != "argument") continue;
+    if (!output && child.kind() != "argument") return;
     CallArgument argument{.node = child,
                           .name = child.child_by_field("name"),
                           .value = child.child_by_field(output ? "target" : "value"),
@@ -227,13 +224,12 @@ std::vector<CallArgument> call_arguments(SyntaxNode arguments) {
       argument.output = true;
     }
     result.push_back(argument);
-  }
-  ts_tree_cursor_delete(&cursor);
+  });
   return result;
 }
 
-ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, const std::vector<CallArgument>& arguments,
-                                      SyntaxNode call, int depth) {
+ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call,
+                                      const std::vector<CallArgument>& arguments, SyntaxNode call, int depth) {
   if (callee->kind == SymbolKind::Program && pou_.kind == SymbolKind::Function) {
     // A function keeps no state and may run any number of times per cycle; a program is one
     // instance with state (AK800 manual L2726, IEC 61131-3 table of POU calls).
@@ -246,7 +242,8 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
   const bool is_function = callee->kind == SymbolKind::Function || callee->kind == SymbolKind::Method;
   ExprInfo result{.type = types_.void_type()};
   if (is_function) result.type = callee->result_type ? callee->result_type : types_.unknown();
-  if (callee->has(kLibrary) && callee->kind == SymbolKind::Function && !callee->result_type) result.type = types_.unknown();
+  if (callee->has(kLibrary) && callee->kind == SymbolKind::Function && !callee->result_type)
+    result.type = types_.unknown();
 
   std::vector<ExprInfo> bound;  // arguments given to parameters of the result's generic type
   std::vector<SyntaxNode> bound_where;
@@ -270,9 +267,9 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
     const bool output = argument.output;
     SyntaxNode name = argument.name;
     SyntaxNode value = argument.value;
-    ExprInfo value_info = argument.typed        ? *argument.typed
-                          : value ? type_expression(value, depth + 1)
-                                  : ExprInfo{.type = types_.unknown()};
+    ExprInfo value_info = argument.typed ? *argument.typed
+                          : value        ? type_expression(value, depth + 1)
+                                         : ExprInfo{.type = types_.unknown()};
     const Parameter* parameter = nullptr;
     if (name) {
       formal = true;
@@ -317,7 +314,8 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
         parameter = inputs[positional];
       } else if (!extensible_seen && !inputs.empty() && !instance_call) {
         report(codes::kTooManyArguments,
-               fmt::format("'{}' takes {} argument(s), more are given", callee->name, inputs.size()), argument.node.range());
+               fmt::format("'{}' takes {} argument(s), more are given", callee->name, inputs.size()),
+               argument.node.range());
       }
       ++positional;
       if (parameter) given.push_back(parameter);
@@ -334,7 +332,8 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
              value.range());
     } else if (parameter->section == ast::VarSection::InOut && value_info.value && value_info.untyped_literal) {
       report(codes::kInOutNotAssignable,
-             fmt::format("'{}' is VAR_IN_OUT: pass a variable, not a constant", parameter->symbol->name), value.range());
+             fmt::format("'{}' is VAR_IN_OUT: pass a variable, not a constant", parameter->symbol->name),
+             value.range());
     }
     if (output) {
       // The output's value flows into the target variable.
@@ -355,8 +354,8 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call, 
       if (parameter.section != ast::VarSection::InOut) continue;
       if (std::find(given.begin(), given.end(), &parameter) != given.end()) continue;
       report(codes::kMissingParameter,
-             fmt::format("VAR_IN_OUT '{}' of '{}' is not connected", parameter.symbol->name, callee->name), call.range(),
-             fmt::format("pass a variable: {} := ...", parameter.symbol->name));
+             fmt::format("VAR_IN_OUT '{}' of '{}' is not connected", parameter.symbol->name, callee->name),
+             call.range(), fmt::format("pass a variable: {} := ...", parameter.symbol->name));
     }
   }
   if (callee->kind == SymbolKind::Function && !instance_call && !vendor_names &&
@@ -393,9 +392,10 @@ void BodyChecker::check_one_generic_type(const Symbol* callee, const std::vector
                                 convertibility(argument.type, typed, model_.profile()) == Convertibility::Same
                           : convertibility(argument.type, typed, model_.profile()) == Convertibility::Same;
     if (fits) continue;
-    report(codes::kTypeMismatch,
-           fmt::format("{} takes arguments of one type: {} and {} differ", callee->name, typed->name, argument.type->name),
-           where[i].range(), fmt::format("convert explicitly, e.g. {}_TO_{}()", argument.type->name, typed->name));
+    report(
+        codes::kTypeMismatch,
+        fmt::format("{} takes arguments of one type: {} and {} differ", callee->name, typed->name, argument.type->name),
+        where[i].range(), fmt::format("convert explicitly, e.g. {}_TO_{}()", argument.type->name, typed->name));
     return;
   }
 }
@@ -408,7 +408,9 @@ const Type* BodyChecker::bind_generic_result(const Symbol* callee, const std::ve
     const Type* type = arithmetic_type(argument.type);
     if (type->is_unknown()) return types_.unknown();
     if (argument.untyped_literal) {
-      literal = literal ? (common_numeric_type(literal, type, types_) ? common_numeric_type(literal, type, types_) : literal) : type;
+      literal =
+          literal ? (common_numeric_type(literal, type, types_) ? common_numeric_type(literal, type, types_) : literal)
+                  : type;
       continue;
     }
     if (!typed) {

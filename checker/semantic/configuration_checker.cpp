@@ -76,7 +76,7 @@ ConfigurationIndex index_configurations(const ProjectModel& model) {
 }
 
 bool same_node(SyntaxNode a, SyntaxNode b) {
-  return a.raw().id == b.raw().id;
+  return a == b;
 }
 
 std::string pointer_key(char kind, const void* pointer) {
@@ -221,7 +221,7 @@ class PathResolver {
 
   bool start_at_instance(const ProgramInstance& found, ResolvedPath& result, const Symbol*& container) const {
     if (!found.program) return false;  // unknown program type: E506 at the PROGRAM line
-    result.root = pointer_key('I', found.node.raw().id);
+    result.root = pointer_key('I', found.node.identity());
     container = found.program;
     return true;
   }
@@ -630,7 +630,7 @@ ConfigurationTable build_configuration_table(const ProjectModel& model) {
       if (!instance.program) continue;
       const std::string path = instance.resource.empty() ? std::string(instance.name)
                                                          : fmt::format("{}.{}", instance.resource, instance.name);
-      walker.walk(instance.program, pointer_key('I', instance.node.raw().id), pointer_key('P', instance.program), chain,
+      walker.walk(instance.program, pointer_key('I', instance.node.identity()), pointer_key('P', instance.program), chain,
                   path);
     }
   } else {

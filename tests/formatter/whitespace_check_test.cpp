@@ -13,6 +13,7 @@
 #include "formatter/format.hpp"
 #include "formatter/token_check.hpp"
 #include "parser/document.hpp"
+#include "parser/tree_printer.hpp"
 #include "tests/formatter/check_samples.hpp"
 
 namespace rung::format {
@@ -148,10 +149,7 @@ std::string variant(const std::string& text, const TokenStream& s, bool wild, st
 }
 
 std::string sexp(const SyntaxTree& tree) {
-  char* s = ts_node_string(tree.root().raw());
-  std::string out(s);
-  free(s);  // NOLINT(cppcoreguidelines-no-malloc): tree-sitter allocates the string with malloc
-  return out;
+  return print_sexp(tree.root());
 }
 
 TEST(WhitespaceCheck, EverySafeVariantOfTheSeedCorpusParsesToTheSameTree) {

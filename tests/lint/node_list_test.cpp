@@ -1,6 +1,7 @@
-// The flat node list the lint rules walk (checker/lint/node_list.hpp) says what the tree says:
-// every node walk_preorder visits, in its order, with the same kind, range, flags, parent and
-// field, on the golden rule files and on broken code (ERROR and missing nodes).
+// The index API the lint rules walk (checker/lint/node_list.hpp) says what the SyntaxNode API
+// says: every node walk_preorder visits, in its order, with the same kind, range, flags, parent
+// and field, on the golden rule files and on broken code (ERROR and missing nodes). Both read the
+// tree's node table; tests/parser/node_table_test.cpp checks the table against tree-sitter.
 #include "checker/lint/node_list.hpp"
 
 #include <gtest/gtest.h>

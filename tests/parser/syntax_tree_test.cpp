@@ -48,17 +48,31 @@ TEST(SyntaxTree, TokensTileTheTextExactlyAndKeepTrivia) {
 }
 
 TEST(SyntaxTree, IncrementalEditMatchesFreshParse) {
-  SyntaxTree tree = SyntaxTree::parse(kProgram);
-  std::string text = kProgram;
-  size_t at = text.find("x + 1");
-  ASSERT_NE(at, std::string::npos);
-  auto changed = tree.apply_edit(static_cast<uint32_t>(at + 4), static_cast<uint32_t>(at + 5), "42");
-  text.replace(at + 4, 1, "42");
-  EXPECT_EQ(tree.text(), text);
-  EXPECT_FALSE(changed.empty());
-  SyntaxTree fresh = SyntaxTree::parse(text);
-  EXPECT_EQ(print_sexp(tree.root()), print_sexp(fresh.root()));
-  EXPECT_FALSE(tree.root().has_error());
+  SyntaxTree::Options keep;
+  keep.keep_parse_tree = true;
+  for (const bool incremental : {true, false}) {
+    SyntaxTree tree = SyntaxTree::parse(kProgram, incremental ? keep : SyntaxTree::Options{});
+    EXPECT_EQ(tree.raw() != nullptr, incremental);
+    std::string text = kProgram;
+    size_t at = text.find("x + 1");
+    ASSERT_NE(at, std::string::npos);
+    auto changed = tree.apply_edit(static_cast<uint32_t>(at + 4), static_cast<uint32_t>(at + 5), "42");
+    text.replace(at + 4, 1, "42");
+    EXPECT_EQ(tree.text(), text);
+    ASSERT_FALSE(changed.empty());
+    if (incremental) {
+      // Only the edited literal changed: tree-sitter compared the old and the new tree.
+      EXPECT_LE(changed.front().begin, at + 4);
+      EXPECT_LT(changed.back().end, text.size());
+    } else {
+      // Without the old tree the whole text counts as changed.
+      EXPECT_EQ(changed.front().begin, 0u);
+      EXPECT_EQ(changed.front().end, text.size());
+    }
+    SyntaxTree fresh = SyntaxTree::parse(text);
+    EXPECT_EQ(print_sexp(tree.root()), print_sexp(fresh.root()));
+    EXPECT_FALSE(tree.root().has_error());
+  }
 }
 
 TEST(SyntaxTree, EditThatBreaksAndRepairsCode) {
