@@ -74,6 +74,9 @@ Json signature_help(Session& session, const Json& params) {
   const bool offsets = json_at(session.client_capabilities(), {"textDocument", "signatureHelp", "signatureInformation",
                                                                "parameterInformation", "labelOffsetSupport"}) == Json(true);
   Json parameters = Json::array();
+  // No parameter matches the argument at the cursor (an unknown name, one argument too many):
+  // an index past the last parameter, which VS Code and Neovim show as no highlight (LSP 3.17 has
+  // no null here; 0 would wrongly mark the first parameter).
   size_t active = signature.parameters.size();
   for (size_t i = 0; i < signature.parameters.size(); ++i) {
     const Symbol& parameter = *signature.parameters[i];
