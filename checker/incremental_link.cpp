@@ -208,9 +208,9 @@ bool ProjectModel::relink_bodies_only(Source& source, std::unique_ptr<Document>&
 // files without names (overlaps, task assignment): those edits still link everything.
 std::optional<std::vector<SourceId>> ProjectModel::relink_interface(Source& source, std::unique_ptr<Document>& document,
                                                                     FileSymbols& fresh) {
-  // Then one full link() frees them: a syntax tree takes about 30 times its text, so at most
-  // ~120 MB wait, and a link of the whole project every few hundred keystrokes in a VAR block
-  // costs little per keystroke.
+  // Then one full link() frees them: a parsed document takes about 7 times its text (text and
+  // node table), so at most ~30 MB wait, and a link of the whole project every few hundred
+  // keystrokes in a VAR block costs little per keystroke.
   constexpr size_t kMaxRetired = 256;
   constexpr size_t kMaxRetiredText = 4u << 20;
   if (source.library || !source.document || !source.document->tree() || !document->tree()) return std::nullopt;

@@ -54,21 +54,11 @@ class NodeList {
   // The index of `node`, a node of this tree; kNone when it is not in the list.
   uint32_t index_of(SyntaxNode node) const { return node && node.table() == table_ ? node.index() : kNone; }
   // The first child of `i` under `field` (an id from field_id()); kNone if none.
-  uint32_t child_by_field(uint32_t i, TSFieldId field) const {
-    if (field == 0 || i >= size()) return kNone;
-    for (uint32_t child = i + 1; child < subtree_end(i); child = subtree_end(child)) {
-      if (at(child).field == field) return child;
-    }
-    return kNone;
-  }
+  uint32_t child_by_field(uint32_t i, TSFieldId field) const { return index_of(node(i).child_by_field_id(field)); }
 
   // The first named child of `i` of `kind`; kNone if none.
   uint32_t first_child_of_kind(uint32_t i, std::string_view kind) const {
-    if (i >= size()) return kNone;
-    for (uint32_t child = i + 1; child < subtree_end(i); child = subtree_end(child)) {
-      if (is_named(child) && this->kind(child) == kind) return child;
-    }
-    return kNone;
+    return index_of(node(i).first_child_of_kind(kind));
   }
 
   // The grammar's id of a field name ("condition"); 0 for an unknown name.
@@ -77,16 +67,14 @@ class NodeList {
   // Calls visit(child) for each child of `i` in order.
   template <typename Visit>
   void for_each_child(uint32_t i, Visit&& visit) const {
-    for (uint32_t child = i + 1; child < subtree_end(i); child = subtree_end(child)) visit(child);
+    node(i).for_each_child([&](SyntaxNode child) { visit(child.index()); });
   }
 
   // Calls enter(i) for `from` and the nodes below it in preorder; enter returns whether to visit
-  // the node's children (walk_preorder over the array).
+  // the node's children (walk_preorder by index).
   template <typename Enter>
   void walk(uint32_t from, Enter&& enter) const {
-    if (from >= size()) return;
-    const uint32_t stop = subtree_end(from);
-    for (uint32_t i = from; i < stop;) i = enter(i) ? i + 1 : subtree_end(i);
+    walk_preorder(node(from), [&](SyntaxNode n) { return enter(n.index()); });
   }
 
  private:
