@@ -360,7 +360,8 @@ int run_fmt_command(const FmtCommandOptions& options, std::FILE* in, std::FILE* 
     std::string summary;
     if (report_only) {
       summary =
-          changed ? fmt::format("{} of {} need formatting (run 'rung fmt' to format them)", changed, file_count(total))
+          changed ? fmt::format("{} of {} {} formatting (run 'rung fmt' to format {})", changed, file_count(total),
+                                changed == 1 ? "needs" : "need", changed == 1 ? "it" : "them")
                   : fmt::format("{} already formatted", file_count(total - failed));
     } else {
       summary = fmt::format("formatted {} of {}", changed, file_count(total));

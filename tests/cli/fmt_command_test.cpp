@@ -165,7 +165,7 @@ TEST_F(FmtCommand, CheckListsChangedFilesAndWritesNothing) {
   const RunResult r = rung("fmt --check .");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.out, "a.st\n");
-  EXPECT_NE(r.err.find("1 of 2 files need formatting"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1 of 2 files needs formatting"), std::string::npos) << r.err;
   EXPECT_EQ(read("a.st"), kLowerCase);
 }
 
