@@ -530,7 +530,10 @@ module.exports = grammar({
 
     // The ':' is required; without it (TYPE S STRUCT ..., as old manuals print it) the struct
     // still parses so that its members are read, and the syntax checks report the missing ':'.
+    // TwinCAT puts access and inheritance modifiers before the name: TYPE INTERNAL E : (...),
+    // TYPE ABSTRACT S : STRUCT ...
     struct_type: $ => prec.right(seq(
+      repeat($.modifier),
       field('name', $.identifier),
       optional($.extends_clause),
       optional(':'),
@@ -550,6 +553,7 @@ module.exports = grammar({
     ),
 
     union_type: $ => seq(
+      repeat($.modifier),
       field('name', $.identifier),
       ':',
       kw('UNION'),
@@ -559,6 +563,7 @@ module.exports = grammar({
     ),
 
     enum_type: $ => prec.right(seq(
+      repeat($.modifier),
       field('name', $.identifier),
       ':',
       optional(field('base', $.type_name)),
@@ -577,6 +582,7 @@ module.exports = grammar({
     ),
 
     alias_type: $ => seq(
+      repeat($.modifier),
       field('name', $.identifier),
       ':',
       field('type', $._type_spec),
