@@ -44,20 +44,6 @@ bool starts_with(std::string_view bytes, std::string_view prefix) {
   return bytes.size() >= prefix.size() && bytes.substr(0, prefix.size()) == prefix;
 }
 
-// Length of the all-ASCII prefix of text[pos..], checked 8 bytes at a time:
-// the fast path that keeps large UTF-8 files well under a second.
-size_t ascii_run(std::string_view text, size_t pos) {
-  const size_t begin = pos;
-  while (pos + 8 <= text.size()) {
-    uint64_t word;
-    std::memcpy(&word, text.data() + pos, 8);
-    if (word & 0x8080808080808080ULL) break;
-    pos += 8;
-  }
-  while (pos < text.size() && static_cast<unsigned char>(text[pos]) < 0x80) ++pos;
-  return pos - begin;
-}
-
 struct Utf8Survey {
   size_t multibyte = 0;  // valid sequences of 2-4 bytes
   size_t invalid = 0;    // maximal invalid subparts

@@ -24,6 +24,12 @@ template <typename Emit>
 std::optional<uint32_t> walk(std::string_view utf8, Emit&& emit) {
   size_t pos = 0;
   while (pos < utf8.size()) {
+    // ASCII needs no decoding; most PLC source is ASCII but for its comments.
+    const size_t ascii_end = pos + ascii_run(utf8, pos);
+    for (; pos < ascii_end; ++pos) {
+      if (!emit(static_cast<char32_t>(utf8[pos]))) return static_cast<uint32_t>(pos);
+    }
+    if (pos >= utf8.size()) break;
     const Utf8Step step = decode_utf8_at(utf8, pos);
     if (!step.valid || !emit(step.code_point)) return static_cast<uint32_t>(pos);
     pos += step.length;

@@ -1,6 +1,20 @@
 #include "parser/source/utf8.hpp"
 
+#include <cstring>
+
 namespace rung::source {
+
+size_t ascii_run(std::string_view text, size_t pos) {
+  const size_t begin = pos;
+  while (pos + 8 <= text.size()) {
+    uint64_t word;
+    std::memcpy(&word, text.data() + pos, 8);
+    if (word & 0x8080808080808080ULL) break;
+    pos += 8;
+  }
+  while (pos < text.size() && static_cast<unsigned char>(text[pos]) < 0x80) ++pos;
+  return pos - begin;
+}
 
 Utf8Step decode_utf8_at(std::string_view text, size_t pos) {
   const auto byte = [&](size_t i) { return static_cast<unsigned char>(text[i]); };

@@ -21,6 +21,10 @@ struct Utf8Step {
 // Decodes the code point starting at text[pos]; pos must be < text.size().
 Utf8Step decode_utf8_at(std::string_view text, size_t pos);
 
+// Length of the all-ASCII prefix of text[pos..], checked 8 bytes at a time: the fast path that
+// keeps decoding, validating and encoding large files well under a second.
+size_t ascii_run(std::string_view text, size_t pos);
+
 // Appends the UTF-8 form of `cp` (which must be a scalar value, not a surrogate).
 void append_utf8(std::string& out, char32_t cp);
 
