@@ -240,7 +240,12 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
           report(codes::kUnknownMember, fmt::format("'{}' has no value '{}'", enum_type->name, value_node.text()),
                  value_node.range());
         }
-        return ExprInfo{.type = model_.type_of(enum_type), .symbol = value};
+        ExprInfo enum_info{.type = model_.type_of(enum_type), .symbol = value};
+        // E_Color#Red is as constant as Red: CASE labels, duplicate labels and array bounds need the number.
+        if (value && value->kind == SymbolKind::EnumValue) {
+          if (auto number = model_.enum_value(value)) enum_info.value = ConstValue::of_integer(*number);
+        }
+        return enum_info;
       }
       if (!enum_type && type_node) {
         report(codes::kUnknownLibraryName, fmt::format("unknown type '{}'", type_node.text()), type_node.range());

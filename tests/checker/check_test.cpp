@@ -101,6 +101,18 @@ TEST(Check, StatementRules) {
   EXPECT_EQ(codes_of("PROGRAM P\nVAR t : TON; END_VAR\nt.Q := TRUE;\nEND_PROGRAM\n"), Codes{"E402"});
 }
 
+// Found on a real OpenPLC program: E_State#Idle as a CASE label is a constant, like Idle and
+// E_State.Idle, and takes part in the duplicate-label check.
+TEST(Check, TypedEnumValuesAreConstantCaseLabels) {
+  const std::string type = "TYPE E_State : (Idle, Run := 5); END_TYPE\n";
+  EXPECT_EQ(codes_of(type + "PROGRAM P\nVAR s : E_State; END_VAR\n"
+                            "CASE s OF E_State#Idle: s := E_State#Run; E_State#Run: ; END_CASE\nEND_PROGRAM\n"),
+            Codes{});
+  EXPECT_EQ(codes_of(type + "PROGRAM P\nVAR s : E_State; END_VAR\n"
+                            "CASE s OF E_State#Run: ; E_State.Run: ; END_CASE\nEND_PROGRAM\n"),
+            Codes{"E405"});
+}
+
 TEST(Check, CallRules) {
   EXPECT_EQ(codes_of("PROGRAM P\nVAR t : TON; END_VAR\nt(IN := TRUE, PTT := T#1s);\nEND_PROGRAM\n"), Codes{"E301"});
   EXPECT_EQ(codes_of("PROGRAM P\nVAR t : TON; END_VAR\nt(Q := TRUE);\nEND_PROGRAM\n"), Codes{"E308"});
