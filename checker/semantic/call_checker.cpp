@@ -37,8 +37,9 @@ bool is_en_eno(std::string_view name) {
   return names_equal(name, "EN") || names_equal(name, "ENO");
 }
 
-// The parameter a formal argument names; for standard functions also by the name a vendor gives
-// it (the stubs' rung.alias: CODESYS's LEFT(STR, SIZE) is IEC's LEFT(IN, L)).
+// The parameter a formal argument names; for library functions and blocks also by the name
+// another dialect gives it (the stubs' rung.alias: CODESYS's LEFT(STR, SIZE) is IEC's LEFT(IN, L),
+// CODESYS's CTU(RESET := ...) is IEC's and OpenPLC's CTU(R := ...)).
 const Parameter* find_parameter(const std::vector<Parameter>& parameters, std::string_view name, bool by_alias) {
   for (const auto& parameter : parameters) {
     if (names_equal(parameter.symbol->name, name)) return &parameter;
@@ -274,7 +275,7 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call,
     if (name) {
       formal = true;
       if (is_en_eno(name.text())) continue;
-      parameter = find_parameter(parameters, name.text(), library_function);
+      parameter = find_parameter(parameters, name.text(), callee->has(kLibrary));
       if (!parameter) {
         // Standard functions: vendors name the parameters differently (IEC LEFT(IN, L), CODESYS
         // and TwinCAT LEFT(STR, SIZE)); extensible ones take IN3, IN4 ... beyond IN2.

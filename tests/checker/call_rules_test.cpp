@@ -147,6 +147,23 @@ TEST(CallRules, StandardFunctionsKeepTheirShortForms) {
             Found{"E302@3"});
 }
 
+// Found on real OpenPLC programs: the standard blocks' IEC input names (CTU R, SR S1/R, CTUD
+// R/LD) are as valid as CODESYS's (RESET, SET1, LOAD); a name neither uses is still reported.
+TEST(CallRules, StandardBlocksTakeTheirInputsUnderEitherDialectsName) {
+  const std::string text =
+      "PROGRAM Main\n"
+      "VAR c : CTU; u : CTUD; l : SR; b : BOOL; END_VAR\n"
+      "c(CU := b, R := b, PV := 3);\n"
+      "c(CU := b, RESET := b, PV := 3);\n"
+      "u(CU := b, CD := b, R := b, LD := b, PV := 3);\n"
+      "u(CU := b, CD := b, RESET := b, LOAD := b, PV := 3);\n"
+      "l(S1 := b, R := b);\n"
+      "l(SET1 := b, RESET := b);\n"
+      "c(CU := b, RST := b);\n"  // 9
+      "END_PROGRAM\n";
+  for (Profile profile : {Profile::Codesys, Profile::Iec}) EXPECT_EQ(found(text, profile), Found{"E301@9"});
+}
+
 // --- E106: a longer STRING variable in a shorter one ----------------------------------------
 
 TEST(CallRules, LongerStringVariableInAShorterOneWarns) {
