@@ -47,7 +47,10 @@ bool report_ambiguous_enum_value(BodyChecker& checker, const ProjectModel& model
   std::vector<const Symbol*> enums;
   for (const Symbol* candidate : *candidates) {
     if (candidate->has(kLibrary) != value->has(kLibrary) || !candidate->owner) continue;
-    if (std::find(enums.begin(), enums.end(), candidate->owner) == enums.end()) enums.push_back(candidate->owner);
+    // Two declarations of one enumeration (a type declared twice, reported on its own) do not
+    // make its values ambiguous.
+    const auto same_enum = [&](const Symbol* e) { return names_equal(e->name, candidate->owner->name); };
+    if (std::none_of(enums.begin(), enums.end(), same_enum)) enums.push_back(candidate->owner);
   }
   if (enums.size() < 2) return false;
   std::vector<DiagnosticLabel> labels;
@@ -351,7 +354,10 @@ ExprInfo BodyChecker::type_identifier(SyntaxNode identifier) {
   if (!name_node) return ExprInfo{.type = types_.unknown()};
   const std::string_view name = name_node.text();
   if (const Symbol* symbol = global_only ? model_.lookup_global(name) : model_.lookup(&pou_, name)) {
-    if (symbol->kind == SymbolKind::EnumValue && report_ambiguous_enum_value(*this, model_, symbol, name_node, pou_.source)) {
+    // Inside its own enumeration (the default after the value list: E : (A, B) := B) a value is
+    // not ambiguous: the enumeration's own names come first there.
+    if (symbol->kind == SymbolKind::EnumValue && symbol->owner != &pou_ &&
+        report_ambiguous_enum_value(*this, model_, symbol, name_node, pou_.source)) {
       return ExprInfo{.type = types_.unknown()};  // which enum it is stays open: no follow-up errors
     }
     return info_for_symbol(symbol, name_node);

@@ -123,6 +123,15 @@ TEST(NameRules, IecEnumValueIsTypedByTheAssignedVariable) {
   EXPECT_EQ(found(text, Profile::Iec), (Found{"E007@7"}));
 }
 
+// Found on IronPLC's and Beremiz's test files: an enumeration's default names its own value, and a
+// type declared twice (E003) does not make its values ambiguous.
+TEST(NameRules, EnumDefaultNamesItsOwnValueAndDuplicateTypesAreNoAmbiguity) {
+  EXPECT_EQ(found(kTwoColorEnums + "TYPE COLORS_3 : (blue, red) := blue; END_TYPE\n"), Found{});
+  EXPECT_EQ(found("TYPE L : (INFO, WARN); END_TYPE\nTYPE L : (INFO, WARN); END_TYPE\n"
+                  "PROGRAM P\nVAR x : L := INFO; END_VAR\nEND_PROGRAM\n"),
+            Found{"E003@2"});
+}
+
 TEST(NameRules, LocalVariableHidesEnumValuesOfTheSameName) {
   EXPECT_EQ(found(kTwoColorEnums + "PROGRAM P\nVAR blue : INT; END_VAR\nblue := 1;\nEND_PROGRAM\n"), Found{});
 }
