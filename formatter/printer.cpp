@@ -2,18 +2,21 @@
 
 #include <algorithm>
 
+#include "formatter/comment_text.hpp"
 #include "formatter/spacing.hpp"
 
 namespace rung::format {
 
 uint32_t display_width(std::string_view token) {
   uint32_t width = 0;
+  uint32_t blanks = 0;  // at the end so far: a comment is printed without them (comment_text.hpp)
   for (char c : token) {
     if (c == '\n' || c == '\r') break;
     // Count code points: every byte but UTF-8 continuation bytes.
     if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) ++width;
+    blanks = c == ' ' || c == '\t' ? blanks + 1 : 0;
   }
-  return width;
+  return width - blanks;
 }
 
 namespace {
@@ -130,7 +133,12 @@ std::string print(const WalkResult& walk, const Layout& layout, std::string_view
       out.append(layout.spaces[i], ' ');
     }
     if (!leaf.trivia()) after_opener = leaf.opens_block;
-    append_in_case(out, token_text(text, leaf), leaf.case_class, settings);
+    const std::string_view token = token_text(text, leaf);
+    if (leaf.trivia() && is_comment(token) && has_line_end_blanks(token)) {
+      out += printed_comment(token);
+    } else {
+      append_in_case(out, token, leaf.case_class, settings);
+    }
   }
   out += eol;
   return out;

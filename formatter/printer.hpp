@@ -34,7 +34,8 @@ Layout lay_out(const WalkResult& walk, std::string_view text, const project::For
 std::string print(const WalkResult& walk, const Layout& layout, std::string_view text,
                   const project::FormatSettings& settings);
 
-// Display columns of a token: code points, up to the first line break.
+// Display columns of a token: code points, up to the first line break, without blanks at its end
+// (only a comment can end in blanks, and it is printed without them).
 uint32_t display_width(std::string_view token);
 
 // The columns from the start of leaf `a` to the end of leaf `b` on one line.

@@ -82,6 +82,15 @@ TEST(TokenCheck, CatchesAChangedOrMovedComment) {
   EXPECT_NE(problem->find("lost a comment"), std::string::npos) << *problem;
 }
 
+TEST(TokenCheck, AcceptsACommentWithoutBlanksAtItsLineEndsAndNothingElse) {
+  const std::string input = "PROGRAM P\n// note \t\n(* one  \r\n   two\t*)\nEND_PROGRAM\n";
+  EXPECT_EQ(check(input, "PROGRAM P\n// note\n(* one\r\n   two\t*)\nEND_PROGRAM\n"), std::nullopt);
+  // Blanks inside a line, or the line break itself, are the comment's own.
+  EXPECT_TRUE(check(input, "PROGRAM P\n// note\n(* one\r\n two\t*)\nEND_PROGRAM\n"));
+  EXPECT_TRUE(check(input, "PROGRAM P\n// note\n(* one\n   two\t*)\nEND_PROGRAM\n"));
+  EXPECT_TRUE(check(input, "PROGRAM P\n// note\n(* one\r\n   two*)\nEND_PROGRAM\n"));
+}
+
 TEST(TokenCheck, RefusesAnOutputThatDoesNotParse) {
   std::string output = kProgram;
   output.replace(output.find("END_IF"), 6, "END_FI");

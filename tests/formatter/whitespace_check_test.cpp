@@ -43,6 +43,13 @@ TEST(WhitespaceCheck, AcceptsIndentationSpacingAndKeywordCase) {
   EXPECT_TRUE(quick("IF a=1 THEN x:=2; END_IF\n", "IF a = 1 THEN x := 2; END_IF\n"));
 }
 
+TEST(WhitespaceCheck, AcceptsCommentsWithoutBlanksAtTheirLineEnds) {
+  const std::string input = "PROGRAM P\nx := 1; // note  \n(* a \n b *) x := 2;\nEND_PROGRAM\n";
+  EXPECT_TRUE(quick(input, "PROGRAM P\nx := 1; // note\n(* a\n b *) x := 2;\nEND_PROGRAM\n"));
+  EXPECT_FALSE(quick(input, "PROGRAM P\nx := 1; // note\n(* a\n b*) x := 2;\nEND_PROGRAM\n"));
+  EXPECT_FALSE(quick(input, "PROGRAM P\nx := 1; // not\n(* a\n b *) x := 2;\nEND_PROGRAM\n"));
+}
+
 TEST(WhitespaceCheck, CannotTellForTheWrongOutputsOfTheTokenCheckTests) {
   auto edited = [](std::string text, std::string_view from, std::string_view to) {
     text.replace(text.find(from), from.size(), to);
