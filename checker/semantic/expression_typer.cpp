@@ -243,12 +243,9 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
           report(codes::kUnknownMember, fmt::format("'{}' has no value '{}'", enum_type->name, value_node.text()),
                  value_node.range());
         }
-        ExprInfo enum_info{.type = model_.type_of(enum_type), .symbol = value};
-        // E_Color#Red is as constant as Red: CASE labels, duplicate labels and array bounds need the number.
-        if (value && value->kind == SymbolKind::EnumValue) {
-          if (auto number = model_.enum_value(value)) enum_info.value = ConstValue::of_integer(*number);
-        }
-        return enum_info;
+        // E_Color#Red is the value Red, as constant as a bare Red (CASE labels need its number).
+        if (value && value->kind == SymbolKind::EnumValue) return info_for_symbol(value, value_node);
+        return ExprInfo{.type = model_.type_of(enum_type), .symbol = value};
       }
       if (!enum_type && type_node) {
         report(codes::kUnknownLibraryName, fmt::format("unknown type '{}'", type_node.text()), type_node.range());
