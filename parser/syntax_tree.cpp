@@ -201,10 +201,6 @@ TSPoint advance_point(TSPoint start, std::string_view inserted) {
   return p;
 }
 
-}  // namespace
-
-namespace {
-
 // One parser per thread, reused for every parse: a parser owns stacks and a lexer of its own.
 TSParser* thread_parser() {
   struct Owner {
