@@ -11,10 +11,10 @@ namespace rung::format {
 // (* ... *), /* ... */ or // ... (a pragma is not a comment).
 bool is_comment(std::string_view trivia);
 
-// The comment as printed: blanks before each line end inside it, and at its end, removed.
-std::string printed_comment(std::string_view comment);
+// Appends the comment as printed: blanks before each line end inside it, and at its end, removed.
+void append_printed_comment(std::string& out, std::string_view comment);
 
-// Whether printed_comment() differs from the comment (most comments: no, and no copy is needed).
-bool has_line_end_blanks(std::string_view comment);
+// The comment as printed (append_printed_comment into a new string).
+std::string printed_comment(std::string_view comment);
 
 }  // namespace rung::format

@@ -134,8 +134,8 @@ std::string print(const WalkResult& walk, const Layout& layout, std::string_view
     }
     if (!leaf.trivia()) after_opener = leaf.opens_block;
     const std::string_view token = token_text(text, leaf);
-    if (leaf.trivia() && is_comment(token) && has_line_end_blanks(token)) {
-      out += printed_comment(token);
+    if (leaf.trivia() && is_comment(token)) {
+      append_printed_comment(out, token);
     } else {
       append_in_case(out, token, leaf.case_class, settings);
     }

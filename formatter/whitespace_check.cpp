@@ -228,15 +228,14 @@ bool only_safe_whitespace_changes(CheckInput input, const std::vector<Leaf>& lea
       if (touching_matters(*input.tree, text, pieces[k - 1], p)) return false;
       if (kind_out == Gap::None && !may_join(pieces[k - 1], p)) return false;
     }
-    // A comment may lose the blanks at its line ends (comment_text.hpp); it stays one comment,
-    // ends where it ended, and the scanner's look-ahead counts it as one step either way.
     size_t printed_size = p.text.size();
-    if (is_comment(p.text) && has_line_end_blanks(p.text)) {
+    if (!same_piece(p, output.substr(out_end, p.text.size()))) {
+      // A comment may lose the blanks at its line ends (comment_text.hpp); it stays one comment,
+      // ends where it ended, and the scanner's look-ahead counts it as one step either way.
+      if (!is_comment(p.text)) return false;
       const std::string printed = printed_comment(p.text);
       if (output.substr(out_end, printed.size()) != printed) return false;
       printed_size = printed.size();
-    } else if (!same_piece(p, output.substr(out_end, p.text.size()))) {
-      return false;
     }
     gaps.in.push_back(static_cast<uint32_t>(gap_in.size()));
     gaps.out.push_back(static_cast<uint32_t>(gap_out.size()));

@@ -15,16 +15,20 @@ TEST(CommentText, KnowsCommentsFromPragmas) {
 }
 
 TEST(CommentText, DropsBlanksBeforeLineEndsOnly) {
-  EXPECT_FALSE(has_line_end_blanks("// clean"));
-  EXPECT_FALSE(has_line_end_blanks("(* a  b *)"));
-  EXPECT_TRUE(has_line_end_blanks("// trailing \t "));
+  EXPECT_EQ(printed_comment("// clean"), "// clean");
+  EXPECT_EQ(printed_comment("(* a  b *)"), "(* a  b *)");
   EXPECT_EQ(printed_comment("// trailing \t "), "// trailing");
   // Inside a block comment: LF and CRLF lines, indentation and inner blanks kept.
-  EXPECT_TRUE(has_line_end_blanks("(* one \n\t two  \r\n three *)"));
   EXPECT_EQ(printed_comment("(* one \n\t two  \r\n three *)"), "(* one\n\t two\r\n three *)");
   // A blank-only line becomes empty; a bare carriage return is no line end of its own.
   EXPECT_EQ(printed_comment("(*\n   \n*)"), "(*\n\n*)");
-  EXPECT_FALSE(has_line_end_blanks("(* a \r b *)"));
+  EXPECT_EQ(printed_comment("(* a \r b *)"), "(* a \r b *)");
+}
+
+TEST(CommentText, AppendsAfterWhatIsThere) {
+  std::string out = "x := 1; ";
+  append_printed_comment(out, "// note  ");
+  EXPECT_EQ(out, "x := 1; // note");
 }
 
 }  // namespace
