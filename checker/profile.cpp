@@ -35,6 +35,8 @@ Profile make_profile(project::Profile id) {
       profile.instances_in_functions = false;
       profile.generic_parameters = false;
       profile.bit_string_arithmetic = false;
+      profile.short_circuit_logic = true;
+      profile.integer_promotion = false;
       // IEC 61131-3 3rd edition: only the first unit of a duration may overflow; TIME and LTIME
       // both take us and ns.
       profile.duration_rules.later_units_bounded = true;

@@ -139,6 +139,21 @@ struct Profile {
   // Target: longest STRING(n) and the length of STRING without (n).
   uint32_t max_string_length = 255;
   uint32_t default_string_length = 80;
+  // --- Run-time behaviour (runner/) --------------------------------------------------------
+  // REAL_TO_INT and friends on a .5 tie: CODESYS and OpenPCS round half away from zero
+  // (2.5 -> 3, -2.5 -> -3; CODESYS V3 textbook, conversion operators); MatIEC and 4diac round
+  // half to even. 0 = half away from zero, 1 = half to even (runner RoundRule).
+  uint32_t real_to_int_rounding = 0;
+  // Negative REAL to an unsigned type: keep the two's complement bits (CODESYS on x86, 4diac)
+  // or clamp to 0 (MatIEC).
+  bool negative_real_to_unsigned_clamps = false;
+  // AND / OR on BOOL evaluate both operands (CODESYS, TwinCAT: only AND_THEN / OR_ELSE
+  // short-circuit); strict IEC leaves it to the implementation, rung's iec profile short-circuits.
+  bool short_circuit_logic = false;
+  // Arithmetic on integers narrower than 32 bits is computed in 32 bits, like the registers of
+  // CODESYS's code generator: INT + INT assigned to a DINT keeps 40000 instead of wrapping at
+  // 16 bits. IEC: the operation's type is the operands' type and wraps there.
+  bool integer_promotion = true;
   // {IF defined(NAME)} symbols.
   std::map<std::string, std::string> defines;
 };

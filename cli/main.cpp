@@ -11,6 +11,7 @@
 #include "cli/lint_command.hpp"
 #include "cli/lsp_command.hpp"
 #include "cli/parse_command.hpp"
+#include "cli/run_command.hpp"
 
 namespace {
 
@@ -108,6 +109,12 @@ int run(int argc, char** argv) {
   lint->add_flag("-q,--quiet", lint_options.quiet, "Do not print the closing summary lines");
   lint->add_option("-j,--jobs", lint_options.threads, "Threads (default: one per core)");
 
+  rung::cli::RunCommandOptions run_options;
+  std::string run_format = "human";
+  std::string run_profile;
+  CLI::App* run_command = rung::cli::add_run_subcommand(app, run_options, run_format, run_profile);
+  run_command->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
+
   std::string explain_code;
   CLI::App* explain =
       app.add_subcommand("explain", "Explain a diagnostic code (e.g. rung explain S003), or list all codes");
@@ -185,6 +192,12 @@ int run(int argc, char** argv) {
     if (!lint_profile.empty()) lint_options.profile = rung::project::parse_profile(lint_profile);
     if (write_baseline->count() > 0) lint_options.write_baseline = lint_baseline;
     return rung::cli::run_lint_command(lint_options, stdout, stderr);
+  }
+  if (*run_command) {
+    run_options.color = color;
+    run_options.format = run_format == "json" ? rung::cli::RunFormat::Json : rung::cli::RunFormat::Human;
+    if (!run_profile.empty()) run_options.profile = rung::project::parse_profile(run_profile);
+    return rung::cli::run_run_command(run_options, stdout, stderr);
   }
   if (*check) {
     check_options.color = color;

@@ -1,0 +1,90 @@
+// One callable's code: the frame (parameters, locals, temporaries), the body (ST, IL or SFC), the
+// jumps patched at the end, and the initial values that are set on every call (VAR_TEMP, a
+// function's locals) through the frame image.
+#include <fmt/format.h>
+
+#include "checker/symbols/names.hpp"
+#include "runner/compile/lowering.hpp"
+
+namespace rung::run {
+
+BodyCompiler::BodyCompiler(Lowering& lowering, uint32_t callable_index)
+    : lowering_(lowering),
+      callable_index_(callable_index),
+      pou_(lowering.program().callables[callable_index].symbol),
+      checker_(lowering.model(), *pou_, checker_output_) {}
+
+uint32_t BodyCompiler::emit(Op op, uint32_t a, int64_t b, uint16_t aux) {
+  Program& program = lowering_.program();
+  program.code.push_back(Instr{op, aux, a, b});
+  program.positions.push_back(position_);
+  return static_cast<uint32_t>(program.code.size() - 1);
+}
+
+uint32_t BodyCompiler::here() const { return static_cast<uint32_t>(lowering_.program().code.size()); }
+
+void BodyCompiler::patch(uint32_t at, uint32_t target) { lowering_.program().code[at].a = target; }
+
+void BodyCompiler::compile() {
+  Program& program = lowering_.program();
+  const PouLayout& layout = lowering_.layouts().pou(pou_);
+  frame_size_ = layout.frame_size;
+  SyntaxNode body = pou_->node.child_by_field("body");
+  // Transitions written as `TRANSITION t := expr;` and property accessors keep their body under
+  // the same field; a POU without a body (a stub, an interface's method) gets no code.
+  if (!body || (body.kind() == "statement_list" && ast::statements(body).empty() && pou_->has(check::kLibrary))) {
+    if (pou_->kind == SymbolKind::Interface || pou_->has(check::kLibrary) || pou_->has(check::kAbstract) ||
+        (pou_->owner && pou_->owner->kind == SymbolKind::Interface) ||
+        (pou_->owner && pou_->owner->owner && pou_->owner->owner->kind == SymbolKind::Interface)) {
+      Callable& callable = program.callables[callable_index_];
+      callable.frame_size = static_cast<uint32_t>((frame_size_ + 7) / 8 * 8);
+      callable.frame_image.assign(callable.frame_size, 0);
+      for (const Symbol* variable : layout.frame_variables) {
+        lowering_.write_variable_initial(callable.frame_image, lowering_.layouts().offset(variable), variable);
+      }
+      return;
+    }
+  }
+  const uint32_t begin = here();
+  position_ = pou_->node.begin();
+  if (body) {
+    const std::string_view kind = body.kind();
+    if (kind == "statement_list") {
+      statement_list(body);
+    } else if (kind == "il_body") {
+      il_body(body);
+    } else if (kind == "sfc_network") {
+      sfc_body(body);
+    } else {
+      // TRANSITION t := expression; as a callable returning BOOL.
+      fail(body, fmt::format("rung cannot run this kind of body yet ({})", kind));
+    }
+  }
+  const uint32_t end_of_body = here();
+  for (uint32_t jump : returns_) patch(jump, end_of_body);
+  for (const auto& [jump, label] : jumps_) {
+    auto found = labels_.find(label);
+    if (found == labels_.end()) {
+      lowering_.error(pou_, SyntaxNode(), fmt::format("jump to unknown label '{}'", label));
+      continue;
+    }
+    patch(jump, found->second);
+  }
+  emit(Op::RET);
+  Callable& callable = program.callables[callable_index_];
+  callable.code_begin = begin;
+  callable.code_end = here();
+  callable.compiled = true;
+  callable.frame_size = static_cast<uint32_t>((frame_size_ + 7) / 8 * 8);
+  callable.frame_image.assign(callable.frame_size, 0);
+  for (const Symbol* variable : layout.frame_variables) {
+    lowering_.write_variable_initial(callable.frame_image, lowering_.layouts().offset(variable), variable);
+  }
+  // A function's result starts as its type's default.
+  if (const Type* result = Layouts::result_type(pou_)) {
+    lowering_.write_default(callable.frame_image, layout.result_offset, result);
+  }
+  callable.frame_image.resize(callable.frame_size, 0);
+}
+
+}  // namespace rung::run

@@ -1,0 +1,221 @@
+// Internals of runner/compile: the project-wide state of one compilation (Lowering) and the
+// compiler of one callable's body (BodyCompiler, split over compile_*.cpp by concern).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "checker/semantic/body_checker.hpp"
+#include "runner/compile/compile.hpp"
+#include "runner/compile/layout.hpp"
+#include "runner/stdlib/datetime.hpp"
+#include "runner/vm/program.hpp"
+
+namespace rung::run {
+
+using check::ExprInfo;
+using check::Symbol;
+using check::SymbolKind;
+using check::Type;
+using check::TypeKind;
+
+inline Scalar scalar_kind(const Type* type) { return Layouts::scalar_of(type); }
+
+// How a TIME, DATE, TOD or DT type counts (milliseconds, seconds, nanoseconds).
+TimeUnit time_unit_of(const Type* type);
+
+// Where a variable lives, as a body sees it.
+struct Storage {
+  enum class Kind : uint8_t { Global, Instance, Frame, None };
+  Kind kind = Kind::None;
+  uint64_t offset = 0;
+};
+
+class Lowering {
+ public:
+  Lowering(const check::ProjectModel& model, Program& program, Layouts& layouts);
+
+  const check::ProjectModel& model() const { return model_; }
+  const check::Profile& profile() const { return model_.profile(); }
+  Program& program() { return program_; }
+  Layouts& layouts() { return layouts_; }
+
+  // The callable of a POU (compiled later, from the queue). Interfaces' and stubs' methods get a
+  // callable without code, for their frame layout.
+  uint32_t callable_for(const Symbol* pou);
+  // Compiles every queued callable (the queue grows while it runs).
+  void compile_queue();
+
+  // A global variable's, VAR_STAT's or program instance's address (allocated and initialised on
+  // first use).
+  uint64_t global_address(const Symbol* variable);
+  uint64_t program_instance(const Symbol* program);
+  // Where `variable` lives for code running in `callable_pou`.
+  Storage storage_of(const Symbol* variable, const Symbol* callable_pou);
+
+  // Class ids (instance headers) and method slots for dynamic dispatch.
+  uint32_t class_id(const Symbol* pou);
+  uint32_t method_slot(std::string_view name);
+  void build_vtables();
+
+  // Constant data in the image (string literals).
+  uint64_t constant_bytes(const std::string& bytes, uint64_t alignment);
+  uint32_t dimension(const check::ArrayDimension& dimension, uint64_t stride);
+  uint32_t native(NativeFn function, std::string_view name);
+  uint32_t message(std::string text);
+
+  // Initial values (compile_init.cpp): writes a variable's initial bytes at `at` of `bytes`.
+  void write_variable_initial(std::vector<uint8_t>& bytes, uint64_t at, const Symbol* variable);
+  void write_default(std::vector<uint8_t>& bytes, uint64_t at, const Type* type, int depth = 0);
+  void write_initializer(std::vector<uint8_t>& bytes, uint64_t at, const Type* type, SyntaxNode value,
+                         const Symbol* scope, int depth = 0);
+  void write_constant(std::vector<uint8_t>& bytes, uint64_t at, const Type* type, const check::ConstValue& value);
+  void write_instance(std::vector<uint8_t>& bytes, uint64_t at, const Symbol* pou, int depth);
+
+  void error(const Symbol* where, SyntaxNode node, std::string message);
+  std::vector<CompileError>& errors() { return errors_; }
+
+  std::vector<GlobalList> global_lists();
+
+ private:
+  uint64_t allocate(uint64_t size, uint64_t alignment);
+
+  const check::ProjectModel& model_;
+  Program& program_;
+  Layouts& layouts_;
+  std::unordered_map<const Symbol*, uint32_t> callables_;
+  std::vector<uint32_t> queue_;
+  size_t queue_next_ = 0;
+  std::unordered_map<const Symbol*, uint64_t> globals_;
+  std::vector<const Symbol*> global_order_;
+  std::unordered_map<const Symbol*, uint32_t> class_ids_;
+  std::vector<const Symbol*> classes_;
+  std::unordered_map<std::string, uint32_t> slots_;
+  std::unordered_map<std::string, uint32_t> natives_;
+  std::unordered_map<std::string, uint64_t> constants_;
+  std::vector<CompileError> errors_;
+};
+
+// A place in memory an expression names; Pointer means its address is on the value stack (plus
+// `offset`).
+struct Place {
+  enum class Mode : uint8_t { Global, Instance, Frame, Pointer };
+  Mode mode = Mode::Global;
+  uint64_t offset = 0;
+  const Type* type = nullptr;
+  int bit = -1;  // x.3
+  const Symbol* symbol = nullptr;
+};
+
+class BodyCompiler {
+ public:
+  BodyCompiler(Lowering& lowering, uint32_t callable_index);
+  void compile();
+
+  // --- emission --------------------------------------------------------------------------------
+  uint32_t emit(Op op, uint32_t a = 0, int64_t b = 0, uint16_t aux = 0);
+  uint32_t here() const;
+  void patch(uint32_t at, uint32_t target);
+  void set_position(SyntaxNode node) { position_ = node ? node.begin() : position_; }
+
+  // --- expressions (compile_expr.cpp) -----------------------------------------------------------
+  // Pushes the value of `node` converted to `target` (nullptr: its own type); returns the type of
+  // what was pushed. Aggregates (strings, structs, arrays, instances) push their address.
+  const Type* value(SyntaxNode node, const Type* target = nullptr);
+  void value_as_bool(SyntaxNode node) { value(node, bool_type()); }
+  // The place `node` names (a variable, member, element, dereference); nullopt if it names none.
+  std::optional<Place> place(SyntaxNode node);
+  void load(const Place& place);
+  void address_of(const Place& place);  // pushes the address (Pointer: the offset added)
+  // Stores the value on top of the stack (pushed after the place's address, for Pointer places).
+  void store(const Place& place, const Type* value_type);
+  // Converts the value on top from `from` to `to`.
+  void convert(const Type* from, const Type* to);
+  void push_constant(const check::ConstValue& value, const Type* type);
+  // Reserves a fresh temporary of `type` in the frame; returns its frame offset.
+  uint64_t temporary(const Type* type);
+
+  // --- statements (compile_stmt.cpp) ------------------------------------------------------------
+  void statement_list(SyntaxNode list);
+  void statement(SyntaxNode statement);
+  void assignment(SyntaxNode left, SyntaxNode right, std::string_view op);
+  // obj.Prop := value: calls the property's SET accessor.
+  void property_write(SyntaxNode target, const Symbol* property, SyntaxNode value);
+
+  // --- calls (compile_call.cpp) -----------------------------------------------------------------
+  // Compiles a call; pushes the result (if `want_result`) and returns its type (void: none).
+  const Type* call(SyntaxNode call, bool want_result);
+
+  // --- built-ins (compile_builtin.cpp) ----------------------------------------------------------
+  // Standard functions and operators compiled inline or to natives; nullopt if `name` is none.
+  std::optional<const Type*> builtin_call(std::string_view name, SyntaxNode call, const Symbol* callee,
+                                          const std::vector<check::CallArgument>& arguments,
+                                          const ExprInfo& call_info);
+
+  ExprInfo info(SyntaxNode node) { return checker_.type_of(node); }
+  const Type* bool_type() const;
+  const Type* elementary(std::string_view name) const;
+  void fail(SyntaxNode node, std::string message);
+  Lowering& lowering() { return lowering_; }
+  const Symbol* pou() const { return pou_; }
+
+ private:
+  // compile_expr.cpp
+  const Type* binary(SyntaxNode node, const ExprInfo& info);
+  const Type* unary(SyntaxNode node, const ExprInfo& info);
+  const Type* comparison(std::string_view op, SyntaxNode left, SyntaxNode right);
+  const Type* arithmetic_type(const Type* type) const;
+  std::optional<Place> identifier_place(SyntaxNode node, const ExprInfo& info);
+  std::optional<Place> member_place(SyntaxNode node, const ExprInfo& info);
+  std::optional<Place> index_place(SyntaxNode node);
+  std::optional<Place> deref_place(SyntaxNode node, const ExprInfo& info);
+  Place variable_place(const Symbol* variable);
+  // For a Place that is not already a pointer: turns it into a Pointer place (address pushed).
+  Place as_pointer(const Place& place);
+
+  // compile_il.cpp, compile_sfc.cpp
+  void il_body(SyntaxNode body);
+  void sfc_body(SyntaxNode body);
+
+  // compile_stmt.cpp
+  void if_statement(SyntaxNode node);
+  void case_statement(SyntaxNode node);
+  void for_statement(SyntaxNode node);
+  void while_statement(SyntaxNode node);
+  void repeat_statement(SyntaxNode node);
+
+  // compile_call.cpp
+  const Type* function_call(const Symbol* callee, const std::vector<check::CallArgument>& arguments,
+                            bool want_result, SyntaxNode call);
+  const Type* instance_call(const Symbol* pou_type, const Place& instance, const Symbol* body,
+                            const std::vector<check::CallArgument>& arguments, SyntaxNode call);
+  const Type* method_call(const Symbol* method, std::optional<Place> object, bool virtual_call,
+                          const std::vector<check::CallArgument>& arguments, bool want_result, SyntaxNode call);
+  // The object of `obj.Prop` (nullopt for THIS, SUPER or a bare Prop); `found` false after an error.
+  std::optional<Place> property_object(SyntaxNode access, bool* super, bool* found);
+  void bind_frame_arguments(const Symbol* callee, const std::vector<check::CallArgument>& arguments);
+  void copy_outputs(const Symbol* callee, const std::vector<check::CallArgument>& arguments, bool from_frame,
+                    const std::optional<Place>& instance);
+  const Type* take_result(const Symbol* callee, bool want_result);
+
+  Lowering& lowering_;
+  uint32_t callable_index_;
+  const Symbol* pou_;
+  std::vector<Diagnostic> checker_output_;
+  check::BodyChecker checker_;
+  uint32_t position_ = 0;
+  uint64_t frame_size_ = 0;
+  struct Loop {
+    std::vector<uint32_t> exits;
+    std::vector<uint32_t> continues;
+  };
+  std::vector<Loop> loops_;
+  std::vector<uint32_t> returns_;
+  std::unordered_map<std::string, uint32_t> labels_;
+  std::vector<std::pair<uint32_t, std::string>> jumps_;
+  int depth_ = 0;
+};
+
+}  // namespace rung::run
