@@ -59,26 +59,26 @@ bool until_met(const run::CompiledProject& project, const run::Machine& machine,
   return false;
 }
 
-nlohmann::json variables_json(const run::CompiledProject& project, const run::Machine& machine,
+nlohmann::ordered_json variables_json(const run::CompiledProject& project, const run::Machine& machine,
                               const std::vector<run::VariableView>& variables) {
-  nlohmann::json object = nlohmann::json::object();
+  nlohmann::ordered_json object = nlohmann::ordered_json::object();
   for (const run::VariableView& variable : variables) {
     object[variable.name] = run::value_json(project, machine, run::variable_ref(machine, variable));
   }
   return object;
 }
 
-nlohmann::json state_json(const run::Engine& engine) {
+nlohmann::ordered_json state_json(const run::Engine& engine) {
   const run::CompiledProject& project = engine.project();
-  nlohmann::json programs = nlohmann::json::object();
+  nlohmann::ordered_json programs = nlohmann::ordered_json::object();
   for (const run::ProgramInstance& program : project.programs) {
     programs[program.name] = variables_json(project, engine.machine(), program.variables);
   }
-  nlohmann::json globals = nlohmann::json::object();
+  nlohmann::ordered_json globals = nlohmann::ordered_json::object();
   for (const run::GlobalList& list : project.globals) {
     globals[list.name] = variables_json(project, engine.machine(), list.variables);
   }
-  return nlohmann::json{{"cycles", engine.cycles()},
+  return nlohmann::ordered_json{{"cycles", engine.cycles()},
                         {"time", time_text(engine.now_ns())},
                         {"programs", std::move(programs)},
                         {"globals", std::move(globals)}};
@@ -263,7 +263,7 @@ int run_run_command(const RunCommandOptions& options, std::FILE* out, std::FILE*
     trace << '\n';
   }
 
-  nlohmann::json watch_rows = nlohmann::json::array();
+  nlohmann::ordered_json watch_rows = nlohmann::ordered_json::array();
   const uint64_t bound = (until || for_ns) ? options.max_cycles : options.cycles.value_or(1);
   bool failed = false;
   for (uint64_t n = 0; n < bound; ++n) {
@@ -274,7 +274,7 @@ int run_run_command(const RunCommandOptions& options, std::FILE* out, std::FILE*
     }
     if (!watched.empty()) {
       if (options.format == RunFormat::Json) {
-        nlohmann::json row{{"cycle", engine.cycles()}, {"time", time_text(engine.now_ns())}};
+        nlohmann::ordered_json row{{"cycle", engine.cycles()}, {"time", time_text(engine.now_ns())}};
         for (const auto& [name, ref] : watched) row[name] = run::value_json(project, engine.machine(), ref);
         watch_rows.push_back(std::move(row));
       } else {
@@ -295,7 +295,7 @@ int run_run_command(const RunCommandOptions& options, std::FILE* out, std::FILE*
 
   const auto& error = engine.machine().error();
   if (options.format == RunFormat::Json) {
-    nlohmann::json report = state_json(engine);
+    nlohmann::ordered_json report = state_json(engine);
     if (!watch_rows.empty()) report["watch"] = std::move(watch_rows);
     if (error) report["error"] = run::describe_error(project, *error);
     fmt::print(out, "{}\n", report.dump(2));

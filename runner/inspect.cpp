@@ -110,7 +110,7 @@ std::vector<const check::Symbol*> members_of(Layouts& layouts, const check::Type
   return members;
 }
 
-nlohmann::json json_at(const CompiledProject& project, const Machine& machine, const check::Type* declared,
+nlohmann::ordered_json json_at(const CompiledProject& project, const Machine& machine, const check::Type* declared,
                        uint64_t address, int depth) {
   Layouts& layouts = layouts_of(project);
   const check::Type* type = strip(declared);
@@ -125,14 +125,15 @@ nlohmann::json json_at(const CompiledProject& project, const Machine& machine, c
       if (type->kind == TypeKind::Pou && type->declaration && type->declaration->kind == check::SymbolKind::Interface) {
         break;
       }
-      nlohmann::json object = nlohmann::json::object();
+      nlohmann::ordered_json object = nlohmann::ordered_json::object();
       for (const check::Symbol* member : members_of(layouts, type)) {
         ValueRef ref{member->type, address + layouts.offset(member)};
         if (Layouts::held_by_reference(member)) {
           uint64_t pointer = 0;
           read_bytes(machine, ref.address, &pointer, 8);
-          if (member->section == ast::VarSection::InOut || pointer == 0) {
-            object[std::string(member->name)] = pointer;
+          // A VAR_IN_OUT or REFERENCE shows the value it refers to; null while it refers to nothing.
+          if (!machine.valid(pointer, 1)) {
+            object[std::string(member->name)] = nullptr;
             continue;
           }
           ref.address = pointer;
@@ -145,8 +146,8 @@ nlohmann::json json_at(const CompiledProject& project, const Machine& machine, c
     case TypeKind::Array: {
       const uint64_t element = layouts.of(type->element).size;
       // Nested JSON arrays for each dimension.
-      std::function<nlohmann::json(size_t, uint64_t)> dimension = [&](size_t d, uint64_t at) -> nlohmann::json {
-        nlohmann::json array = nlohmann::json::array();
+      std::function<nlohmann::ordered_json(size_t, uint64_t)> dimension = [&](size_t d, uint64_t at) -> nlohmann::ordered_json {
+        nlohmann::ordered_json array = nlohmann::ordered_json::array();
         if (d >= type->dimensions.size()) return json_at(project, machine, type->element, at, depth + 1);
         const auto& dim = type->dimensions[d];
         uint64_t stride = element;
@@ -166,8 +167,8 @@ nlohmann::json json_at(const CompiledProject& project, const Machine& machine, c
   if (!slot) return nullptr;
   switch (type->kind) {
     case TypeKind::Bool: return slot->u != 0;
-    case TypeKind::Real: return scalar == Scalar::F32 ? nlohmann::json(std::stod(shortest_real(slot->f32, true)))
-                                                     : nlohmann::json(slot->f64);
+    case TypeKind::Real: return scalar == Scalar::F32 ? nlohmann::ordered_json(std::stod(shortest_real(slot->f32, true)))
+                                                     : nlohmann::ordered_json(slot->f64);
     case TypeKind::Duration:
       return duration_text(slot->i, time_unit_of(type), type->long_variant);
     case TypeKind::Date: return date_text(slot->i, time_unit_of(type), type->long_variant);
@@ -201,7 +202,7 @@ std::string quote(std::string_view text) {
   return out + "'";
 }
 
-std::string text_from_json(const nlohmann::json& value, const check::Type* declared, Layouts& layouts) {
+std::string text_from_json(const nlohmann::ordered_json& value, const check::Type* declared, Layouts& layouts) {
   const check::Type* type = strip(declared);
   if (value.is_null()) return "?";
   if (value.is_boolean()) return value.get<bool>() ? "TRUE" : "FALSE";
@@ -253,7 +254,7 @@ ValueRef variable_ref(const Machine& machine, const VariableView& variable) {
   return ref;
 }
 
-nlohmann::json value_json(const CompiledProject& project, const Machine& machine, const ValueRef& ref) {
+nlohmann::ordered_json value_json(const CompiledProject& project, const Machine& machine, const ValueRef& ref) {
   return json_at(project, machine, ref.type, ref.address, 0);
 }
 

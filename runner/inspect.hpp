@@ -24,7 +24,7 @@ std::optional<ValueRef> resolve_path(const CompiledProject& project, const Machi
                                      std::string* error);
 
 // The value at `ref` as JSON (see docs/commands/run.md for the mapping).
-nlohmann::json value_json(const CompiledProject& project, const Machine& machine, const ValueRef& ref);
+nlohmann::ordered_json value_json(const CompiledProject& project, const Machine& machine, const ValueRef& ref);
 // The value as IEC text: TRUE, 42, 1.5, T#1s500ms, 'text', [1, 2], (a := 1, b := 2).
 std::string value_text(const CompiledProject& project, const Machine& machine, const ValueRef& ref);
 // Writes a literal (TRUE, 42, -1.5, T#2s, 'text', 16#FF, an enum value name) into `ref`; false

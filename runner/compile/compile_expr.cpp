@@ -106,6 +106,11 @@ int64_t units_per_ns_divisor(TimeUnit unit) {
 
 }  // namespace
 
+bool BodyCompiler::inside_accessor_of(const Symbol* property) const {
+  // In GET and SET the property's name is the value itself (the accessor's result slot).
+  return pou_->owner == property && property->kind == SymbolKind::Property;
+}
+
 const Type* BodyCompiler::bool_type() const { return lowering_.model().types().elementary("BOOL"); }
 const Type* BodyCompiler::elementary(std::string_view name) const { return lowering_.model().types().elementary(name); }
 
@@ -288,7 +293,7 @@ const Type* BodyCompiler::value(SyntaxNode node, const Type* target) {
       return target;
     }
     emit(Op::PUSH, 0, *number);
-  } else if (in.symbol && in.symbol->kind == SymbolKind::Property) {
+  } else if (in.symbol && in.symbol->kind == SymbolKind::Property && !inside_accessor_of(in.symbol)) {
     pushed = call(node, true);  // reading a property calls its GET
   } else if (auto where = place(node)) {
     load(*where);

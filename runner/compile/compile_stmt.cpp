@@ -89,7 +89,7 @@ void BodyCompiler::statement(SyntaxNode node) {
 void BodyCompiler::assignment(SyntaxNode left, SyntaxNode right, std::string_view op) {
   const ExprInfo target_info = info(left);
   // An assignment to a property calls its SET accessor.
-  if (target_info.symbol && target_info.symbol->kind == SymbolKind::Property) {
+  if (target_info.symbol && target_info.symbol->kind == SymbolKind::Property && !inside_accessor_of(target_info.symbol)) {
     property_write(left, target_info.symbol, right);
     return;
   }

@@ -156,6 +156,7 @@ class BodyCompiler {
 
   ExprInfo info(SyntaxNode node) { return checker_.type_of(node); }
   const Type* bool_type() const;
+  bool inside_accessor_of(const Symbol* property) const;
   const Type* elementary(std::string_view name) const;
   void fail(SyntaxNode node, std::string message);
   Lowering& lowering() { return lowering_; }
