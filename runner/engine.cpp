@@ -9,6 +9,9 @@ namespace rung::run {
 
 Engine::Engine(const CompiledProject& project, uint64_t tick_ns) : project_(project) {
   machine_ = std::make_unique<Machine>(*project.program);
+  for (const Program::InitCall& init : project.program->init_calls) {
+    if (!machine_->call(init.callable, init.instance)) break;  // the error stays for the first cycle
+  }
   if (tick_ns != 0) {
     tick_ns_ = tick_ns;
   } else {

@@ -244,7 +244,7 @@ std::string text_from_json(const nlohmann::ordered_json& value, const check::Typ
 }  // namespace
 
 ValueRef variable_ref(const Machine& machine, const VariableView& variable) {
-  ValueRef ref{variable.type, variable.address};
+  ValueRef ref{variable.type, variable.address, variable.bit};
   if (variable.by_reference) {
     uint64_t pointer = 0;
     read_bytes(machine, variable.address, &pointer, 8);
@@ -255,6 +255,11 @@ ValueRef variable_ref(const Machine& machine, const VariableView& variable) {
 }
 
 nlohmann::ordered_json value_json(const CompiledProject& project, const Machine& machine, const ValueRef& ref) {
+  if (ref.bit >= 0) {
+    uint8_t byte = 0;
+    if (!read_bytes(machine, ref.address, &byte, 1)) return nullptr;
+    return ((byte >> ref.bit) & 1) != 0;
+  }
   return json_at(project, machine, ref.type, ref.address, 0);
 }
 
@@ -483,6 +488,11 @@ bool write_value(const CompiledProject& project, Machine& machine, const ValueRe
         return fail(fmt::format("{} does not fit in {}", text, type->name));
       }
     }
+  }
+  if (ref.bit >= 0) {
+    const auto mask = static_cast<uint8_t>(1u << ref.bit);
+    *at = static_cast<uint8_t>(slot.u != 0 ? (*at | mask) : (*at & ~mask));
+    return true;
   }
   switch (scalar) {
     case Scalar::U8:

@@ -16,6 +16,7 @@ namespace rung::run {
 struct ValueRef {
   const check::Type* type = nullptr;
   uint64_t address = 0;
+  int bit = -1;  // a BOOL at a bit of the process image
 };
 
 // `path`: an optional program instance or GVL name, then variables, members and [indexes]. A bare

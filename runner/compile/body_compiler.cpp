@@ -25,8 +25,51 @@ uint32_t BodyCompiler::here() const { return static_cast<uint32_t>(lowering_.pro
 
 void BodyCompiler::patch(uint32_t at, uint32_t target) { lowering_.program().code[at].a = target; }
 
+void BodyCompiler::runtime_initial_values(const Symbol* owner) {
+  // `x : T := expression` computed in code, in declaration order.
+  for (const Symbol* variable : lowering_.runtime_initialized(owner)) {
+    SyntaxNode value_node = variable->node.child_by_field("value");
+    set_position(value_node);
+    Place target = variable_place(variable);
+    if (!target.type) continue;
+    const bool aggregate = scalar_kind(target.type) == Scalar::None;
+    if (Layouts::held_by_reference(variable)) {
+      // REFERENCE TO x := y: the slot takes y's address.
+      const Storage storage = lowering_.storage_of(variable, pou_);
+      auto source = place(value_node);
+      if (!source) {
+        fail(value_node, "a REFERENCE's initial value must be a variable");
+        continue;
+      }
+      lowering_.program().code.pop_back();  // the load variable_place() emitted for the slot
+      lowering_.program().positions.pop_back();
+      address_of(*source);
+      emit(storage.kind == Storage::Kind::Global     ? Op::ST_64_G
+           : storage.kind == Storage::Kind::Instance ? Op::ST_64_I
+                                                     : Op::ST_64_F,
+           static_cast<uint32_t>(storage.offset));
+      continue;
+    }
+    if (target.mode == Place::Mode::Pointer || aggregate) target = as_pointer(target);
+    const Type* pushed = value(value_node, target.type);
+    store(target, pushed);
+  }
+}
+
 void BodyCompiler::compile() {
   Program& program = lowering_.program();
+  if (program.callables[callable_index_].kind == CallableKind::Init) {
+    const uint32_t begin = here();
+    runtime_initial_values(pou_);
+    emit(Op::RET);
+    Callable& callable = program.callables[callable_index_];
+    callable.code_begin = begin;
+    callable.code_end = here();
+    callable.compiled = true;
+    callable.frame_size = static_cast<uint32_t>((frame_size_ + 7) / 8 * 8);
+    callable.frame_image.assign(callable.frame_size, 0);
+    return;
+  }
   const PouLayout& layout = lowering_.layouts().pou(pou_);
   frame_size_ = layout.frame_size;
   SyntaxNode body = pou_->node.child_by_field("body");
@@ -45,8 +88,20 @@ void BodyCompiler::compile() {
       return;
     }
   }
+  // The frame's initial bytes first: writing them also finds the initial values that must be
+  // computed in code.
+  std::vector<uint8_t> frame_image(layout.frame_size, 0);
+  for (const Symbol* variable : layout.frame_variables) {
+    lowering_.write_variable_initial(frame_image, lowering_.layouts().offset(variable), variable);
+  }
+  // A function's result starts as its type's default.
+  if (const Type* result = Layouts::result_type(pou_)) {
+    lowering_.write_default(frame_image, layout.result_offset, result);
+  }
   const uint32_t begin = here();
   position_ = pou_->node.begin();
+  // A function's or method's locals with computed initial values, on every call.
+  if (pou_->kind != SymbolKind::Program) runtime_initial_values(pou_);
   if (body) {
     const std::string_view kind = body.kind();
     if (kind == "statement_list") {
@@ -76,14 +131,7 @@ void BodyCompiler::compile() {
   callable.code_end = here();
   callable.compiled = true;
   callable.frame_size = static_cast<uint32_t>((frame_size_ + 7) / 8 * 8);
-  callable.frame_image.assign(callable.frame_size, 0);
-  for (const Symbol* variable : layout.frame_variables) {
-    lowering_.write_variable_initial(callable.frame_image, lowering_.layouts().offset(variable), variable);
-  }
-  // A function's result starts as its type's default.
-  if (const Type* result = Layouts::result_type(pou_)) {
-    lowering_.write_default(callable.frame_image, layout.result_offset, result);
-  }
+  callable.frame_image = std::move(frame_image);
   callable.frame_image.resize(callable.frame_size, 0);
 }
 

@@ -16,8 +16,17 @@ std::vector<VariableView> instance_variables(Lowering& lowering, const Symbol* p
   std::vector<VariableView> views;
   const PouLayout& layout = lowering.layouts().pou(pou);
   for (const Symbol* variable : layout.instance_variables) {
-    views.push_back(VariableView{std::string(variable->name), variable->type, base + lowering.layouts().offset(variable),
-                                 Layouts::held_by_reference(variable)});
+    VariableView view{std::string(variable->name), variable->type, base + lowering.layouts().offset(variable),
+                      Layouts::held_by_reference(variable)};
+    if (variable->location_node) {
+      // Located variables live in the process image, not in the instance.
+      const Storage storage = lowering.storage_of(variable, pou);
+      if (storage.kind == Storage::Kind::Global) {
+        view.address = storage.offset;
+        view.bit = storage.bit;
+      }
+    }
+    views.push_back(std::move(view));
   }
   return views;
 }
@@ -174,6 +183,15 @@ CompiledProject compile_project(const check::ProjectModel& model, const CompileO
     for (size_t i = 0; i < out.programs.size(); ++i) task.programs.push_back(i);
     out.tasks.push_back(std::move(task));
   }
+
+  // Computed initial values: the global lists' first, then each program's.
+  for (check::SourceId id = 0; id < model.source_count(); ++id) {
+    if (model.source(id).library) continue;
+    for (const Symbol* symbol : model.top_level_symbols(id)) {
+      if (symbol->kind == SymbolKind::GlobalList) lowering.init_callable(symbol, 0);
+    }
+  }
+  for (const ProgramInstance& program : out.programs) lowering.init_callable(program.program, program.address);
 
   lowering.compile_queue();
   lowering.build_vtables();

@@ -17,6 +17,7 @@ struct VariableView {
   const check::Type* type = nullptr;
   uint64_t address = 0;
   bool by_reference = false;  // the address holds a pointer to the value (VAR_IN_OUT)
+  int bit = -1;               // a BOOL at a bit address of the process image (AT %IX0.3)
 };
 
 struct ProgramInstance {

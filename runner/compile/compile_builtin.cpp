@@ -490,7 +490,7 @@ std::optional<const Type*> BodyCompiler::builtin_call(std::string_view name, Syn
   }
   if (upper == "__NEW" && need(1)) {
     const ExprInfo in = info(args[0]);
-    const Type* type = in.names_type && in.symbol && in.symbol->type ? in.symbol->type : nullptr;
+    const Type* type = in.names_type ? (in.symbol && in.symbol->type ? in.symbol->type : in.type) : nullptr;
     if (!type) {
       fail(args[0], "__NEW needs a type");
       return result;

@@ -106,6 +106,23 @@ Place field_of(BodyCompiler& body, const InstanceRef& ref, uint64_t offset, cons
 
 }  // namespace
 
+void BodyCompiler::in_out_address(SyntaxNode argument, const Symbol* parameter) {
+  // A variable passes its address; a value (allowed for VAR_IN_OUT CONSTANT) passes the address of
+  // a temporary copy.
+  const ExprInfo argument_info = info(argument);
+  if (!argument_info.value) {
+    if (auto source = place(argument)) {
+      address_of(*source);
+      return;
+    }
+  }
+  const uint64_t temp = temporary(parameter->type);
+  emit(Op::ADDR_F, static_cast<uint32_t>(temp));
+  const Type* pushed = value(argument, parameter->type);
+  store(Place{Place::Mode::Pointer, 0, parameter->type, -1, nullptr}, pushed);
+  emit(Op::ADDR_F, static_cast<uint32_t>(temp));
+}
+
 void BodyCompiler::bind_frame_arguments(const Symbol* callee, const std::vector<check::CallArgument>& arguments) {
   const std::vector<const Symbol*> positional = positional_parameters(callee);
   Layouts& layouts = lowering_.layouts();
@@ -113,7 +130,7 @@ void BodyCompiler::bind_frame_arguments(const Symbol* callee, const std::vector<
   size_t position = 0;
   for (const check::CallArgument& argument : arguments) {
     const size_t index = position++;
-    if (argument.output) continue;
+    if (argument.output || !argument.value) continue;  // `PV:= ,` leaves the default
     const Symbol* parameter = parameter_for(lowering_.model(), callee, argument, index, positional);
     if (!parameter) continue;
     if (check::names_equal(parameter->name, "EN")) continue;
@@ -121,13 +138,7 @@ void BodyCompiler::bind_frame_arguments(const Symbol* callee, const std::vector<
     const uint64_t offset = layouts.offset(parameter);
     emit(Op::ADDR_N, static_cast<uint32_t>(offset));
     if (parameter->section == ast::VarSection::InOut) {
-      auto source = place(argument.value);
-      if (!source) {
-        fail(argument.value, "a VAR_IN_OUT argument must be a variable");
-        emit(Op::POP);
-        continue;
-      }
-      address_of(*source);
+      in_out_address(argument.value, parameter);
       emit(Op::ST_64_P);
       continue;
     }
@@ -217,7 +228,7 @@ const Type* BodyCompiler::instance_call(const Symbol* pou_type, const Place& ins
   size_t position = 0;
   for (const check::CallArgument& argument : arguments) {
     const size_t index = position++;
-    if (argument.output) continue;
+    if (argument.output || !argument.value) continue;  // `PV:= ,` keeps the input's value
     const Symbol* parameter = parameter_for(lowering_.model(), pou_type, argument, index, positional);
     if (!parameter || parameter->section == ast::VarSection::Output) continue;
     set_position(argument.node);
@@ -225,12 +236,7 @@ const Type* BodyCompiler::instance_call(const Symbol* pou_type, const Place& ins
     if (parameter->section == ast::VarSection::InOut) {
       Place slot = field_of(*this, ref, offset, elementary("LWORD"));
       if (slot.mode == Place::Mode::Pointer) slot = as_pointer(slot);
-      auto source = place(argument.value);
-      if (!source) {
-        fail(argument.value, "a VAR_IN_OUT argument must be a variable");
-        continue;
-      }
-      address_of(*source);
+      in_out_address(argument.value, parameter);
       store(slot, slot.type);
       continue;
     }
@@ -257,7 +263,7 @@ const Type* BodyCompiler::instance_call(const Symbol* pou_type, const Place& ins
       size_t at = 0;
       for (const check::CallArgument& argument : arguments) {
         const size_t index = at++;
-        if (!argument.output) continue;
+        if (!argument.output || !argument.value) continue;
         const Symbol* parameter = parameter_for(lowering_.model(), pou_type, argument, index, params);
         if (!parameter) continue;
         auto target = place(argument.value);

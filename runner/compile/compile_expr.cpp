@@ -450,6 +450,17 @@ const Type* BodyCompiler::binary(SyntaxNode node, const ExprInfo& in) {
   value(left, computed);
   value(right, computed);
   const Scalar scalar = scalar_kind(computed);
+  if (op == "/" || op == "MOD") {
+    const Type* storage_type = Layouts::storage_type(computed);
+    const char* name = scalar == Scalar::F32   ? "CheckDivReal"
+                       : scalar == Scalar::F64 ? "CheckDivLReal"
+                       : storage_type->bits >= 64 ? "CheckDivLint"
+                       : storage_type->bits >= 32 ? "CheckDivDInt"
+                                                  : "CheckDivInt";
+    const Symbol* check = check_function(name);
+    if (!check && storage_type->bits == 32 && scalar != Scalar::F32) check = check_function("CheckDivInt");
+    if (check) call_check(check, computed, {});
+  }
   if (scalar == Scalar::F32 || scalar == Scalar::F64) {
     const bool single = scalar == Scalar::F32;
     if (op == "+") emit(single ? Op::ADD_F32 : Op::ADD_F64);
@@ -521,6 +532,7 @@ Place BodyCompiler::variable_place(const Symbol* variable) {
       return place;
   }
   place.offset = storage.offset;
+  place.bit = storage.bit;
   if (Layouts::held_by_reference(variable)) {
     // The slot holds the address of the value.
     emit(load_op(Scalar::U64, place.mode), static_cast<uint32_t>(place.offset));
@@ -596,6 +608,16 @@ std::optional<Place> BodyCompiler::place(SyntaxNode node) {
   if (kind == "member_expression") return member_place(node, in);
   if (kind == "index_expression") return index_place(node);
   if (kind == "dereference_expression") return deref_place(node, in);
+  if (kind == "direct_variable") {
+    // %QX0.0, %MW4 written in code: the process image.
+    std::string why;
+    auto at = lowering_.image_address(node.text(), &why);
+    if (!at) {
+      fail(node, why);
+      return std::nullopt;
+    }
+    return Place{Place::Mode::Global, at->address, at->type, at->bit, nullptr};
+  }
   return std::nullopt;
 }
 
@@ -742,6 +764,9 @@ std::optional<Place> BodyCompiler::index_place(SyntaxNode node) {
         return std::nullopt;
       }
       value(indices[next++], index_type);
+      if (const Symbol* bounds = check_function("CheckBounds")) {
+        call_check(bounds, index_type, {dimension.lower, dimension.upper});
+      }
       emit(Op::INDEX, lowering_.dimension(dimension, strides[d]));
     }
     type = type->element;

@@ -3,6 +3,7 @@
 // are written at compile time; the standard's defaults apply where none is given (zero, an
 // enumeration's first value or declared default, a subrange's lower bound, a structure's field
 // initialisers).
+#include <algorithm>
 #include <cstring>
 
 #include "checker/semantic/body_checker.hpp"
@@ -173,11 +174,46 @@ void Lowering::write_instance(std::vector<uint8_t>& bytes, uint64_t at, const Sy
   }
 }
 
+namespace {
+
+// Whether an initial value can only be computed when the program runs (ADR(x), a function call,
+// another variable): not an initializer list, a literal or a constant expression.
+bool needs_runtime(const check::ProjectModel& model, SyntaxNode value, const Symbol* scope) {
+  value = unwrap_parentheses(value);
+  const std::string_view kind = value.kind();
+  if (kind == "array_initializer" || kind == "struct_initializer" || kind == "date_literal" ||
+      kind == "time_of_day_literal" || kind == "date_and_time_literal") {
+    return false;
+  }
+  return !model.constant_value(value, scope).has_value();
+}
+
+}  // namespace
+
+const std::vector<const Symbol*>& Lowering::runtime_initialized(const Symbol* owner) const {
+  static const std::vector<const Symbol*> kNone;
+  auto found = runtime_initialized_.find(owner);
+  return found == runtime_initialized_.end() ? kNone : found->second;
+}
+
 void Lowering::write_variable_initial(std::vector<uint8_t>& bytes, uint64_t at, const Symbol* variable) {
-  if (Layouts::held_by_reference(variable)) return;
   const Type* type = variable->type;
   if (!type) return;
   SyntaxNode value = variable->node.child_by_field("value");
+  const Symbol* owner = variable->owner;
+  if (value && owner && needs_runtime(model_, value, owner)) {
+    // Programs, global lists and call frames compute such values in code; an FB instance's
+    // would need a per-instance initialiser (FB_init), which rung does not generate yet.
+    const bool supported = owner->kind == SymbolKind::Program || owner->kind == SymbolKind::GlobalList ||
+                           owner->kind == SymbolKind::Function || owner->kind == SymbolKind::Method ||
+                           variable->section == ast::VarSection::Temp;
+    if (supported) {
+      auto& list = runtime_initialized_[owner];
+      if (std::find(list.begin(), list.end(), variable) == list.end()) list.push_back(variable);
+      return;
+    }
+  }
+  if (Layouts::held_by_reference(variable)) return;
   if (!value) {
     write_default(bytes, at, type);
     return;

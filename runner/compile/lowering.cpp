@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include <fmt/format.h>
+
+#include "checker/semantic/direct_address.hpp"
 #include "checker/symbols/names.hpp"
 
 namespace rung::run {
@@ -47,6 +50,7 @@ const Symbol* instance_owner(const Symbol* pou) {
 Lowering::Lowering(const check::ProjectModel& model, Program& program, Layouts& layouts)
     : model_(model), program_(program), layouts_(layouts) {
   program_.image.assign(kNullGuard, 0);
+  image_areas_ = allocate(3 * kImageAreaBytes, 8);
   program_.vtables.emplace_back();  // class id 0: not an object
   program_.class_names.emplace_back("(none)");
   classes_.push_back(nullptr);
@@ -130,8 +134,53 @@ void Lowering::compile_queue() {
   }
 }
 
+std::optional<ImageAddress> Lowering::image_address(std::string_view text, std::string* error) {
+  const check::DirectAddressResult parsed = check::parse_direct_address(text, profile().addressing);
+  if (!parsed.ok()) {
+    if (error) *error = parsed.error;
+    return std::nullopt;
+  }
+  const check::DirectAddress& address = *parsed.address;
+  if (address.wildcard) {
+    if (error) *error = "an incomplete address (%I*, %Q*) has no place until it is configured";
+    return std::nullopt;
+  }
+  if (address.last_byte >= kImageAreaBytes) {
+    if (error) *error = fmt::format("'{}' is beyond the {} bytes of rung's process image", text, kImageAreaBytes);
+    return std::nullopt;
+  }
+  const uint64_t area = address.area == check::AddressArea::Input    ? 0
+                        : address.area == check::AddressArea::Output ? 1
+                                                                     : 2;
+  ImageAddress out;
+  out.address = image_areas_ + area * kImageAreaBytes + address.first_byte;
+  const check::TypeArena& types = model_.types();
+  switch (address.size_bits()) {
+    case 8: out.type = types.elementary("BYTE"); break;
+    case 16: out.type = types.elementary("WORD"); break;
+    case 32: out.type = types.elementary("DWORD"); break;
+    case 64: out.type = types.elementary("LWORD"); break;
+    default:
+      out.type = types.elementary("BOOL");
+      out.bit = address.bit.value_or(0);
+      break;
+  }
+  return out;
+}
+
 uint64_t Lowering::global_address(const Symbol* variable) {
   if (auto found = globals_.find(variable); found != globals_.end()) return found->second;
+  // A located variable lives in the process image, where other variables may overlap it.
+  if (variable->location_node) {
+    SyntaxNode address_node = variable->location_node.child_by_field("address");
+    std::string why;
+    if (auto at = address_node ? image_address(address_node.text(), &why) : std::nullopt) {
+      globals_.emplace(variable, at->address);
+      global_order_.push_back(variable);
+      if (at->bit < 0) write_variable_initial(program_.image, at->address, variable);
+      return at->address;
+    }
+  }
   const bool by_reference = Layouts::held_by_reference(variable);
   const TypeLayout layout = by_reference ? TypeLayout{8, 8} : layouts_.of(variable->type);
   const uint64_t at = allocate(layout.size, layout.alignment);
@@ -153,6 +202,13 @@ uint64_t Lowering::program_instance(const Symbol* program) {
 Storage Lowering::storage_of(const Symbol* variable, const Symbol* callable_pou) {
   using Kind = Storage::Kind;
   const Symbol* owner = variable->owner;
+  if (variable->location_node) {
+    SyntaxNode address_node = variable->location_node.child_by_field("address");
+    if (auto at = address_node ? image_address(address_node.text(), nullptr) : std::nullopt) {
+      global_address(variable);
+      return {Kind::Global, at->address, at->bit};
+    }
+  }
   if (variable->section == ast::VarSection::External) {
     if (const Symbol* global = model_.find_linked_global(variable->name)) return {Kind::Global, global_address(global)};
     return {};
@@ -180,6 +236,23 @@ Storage Lowering::storage_of(const Symbol* variable, const Symbol* callable_pou)
     return {Kind::Instance, layouts_.offset(variable)};
   }
   return {};
+}
+
+uint32_t Lowering::init_callable(const Symbol* owner, uint64_t instance) {
+  if (auto found = init_callables_.find(owner); found != init_callables_.end()) return found->second;
+  if (runtime_initialized(owner).empty()) return kNoCallable;
+  Callable callable;
+  callable.name = qualified_name(owner) + " (initial values)";
+  callable.kind = CallableKind::Init;
+  callable.source = owner->source;
+  callable.symbol = owner;
+  if (owner->kind == SymbolKind::Program) callable.instance_size = static_cast<uint32_t>(layouts_.pou(owner).instance_size);
+  const auto index = static_cast<uint32_t>(program_.callables.size());
+  program_.callables.push_back(std::move(callable));
+  init_callables_.emplace(owner, index);
+  queue_.push_back(index);
+  program_.init_calls.push_back(Program::InitCall{index, instance});
+  return index;
 }
 
 uint32_t Lowering::class_id(const Symbol* pou) {
@@ -253,8 +326,10 @@ std::vector<GlobalList> Lowering::global_lists() {
       lists.push_back(GlobalList{list_name, {}});
       it = lists.end() - 1;
     }
-    it->variables.push_back(VariableView{std::string(variable->name), variable->type, globals_.at(variable),
-                                         Layouts::held_by_reference(variable)});
+    VariableView view{std::string(variable->name), variable->type, globals_.at(variable),
+                      Layouts::held_by_reference(variable)};
+    if (variable->location_node) view.bit = storage_of(variable, nullptr).bit;
+    it->variables.push_back(std::move(view));
   }
   return lists;
 }

@@ -31,6 +31,15 @@ struct Storage {
   enum class Kind : uint8_t { Global, Instance, Frame, None };
   Kind kind = Kind::None;
   uint64_t offset = 0;
+  int bit = -1;  // a BOOL at a bit address (AT %IX0.3)
+};
+
+// Where a direct address (%IX0.3, %MW4, %QD1) lives in the process image: its byte address and,
+// for bit addresses, the bit; nullopt with `error` set when it cannot be placed.
+struct ImageAddress {
+  uint64_t address = 0;
+  int bit = -1;
+  const Type* type = nullptr;  // BOOL, BYTE, WORD, DWORD or LWORD by the size letter
 };
 
 class Lowering {
@@ -52,6 +61,9 @@ class Lowering {
   // first use).
   uint64_t global_address(const Symbol* variable);
   uint64_t program_instance(const Symbol* program);
+  // The process image (%I, %Q and %M areas, kImageAreaBytes each) holds located variables.
+  static constexpr uint64_t kImageAreaBytes = 65536;
+  std::optional<ImageAddress> image_address(std::string_view text, std::string* error);
   // Where `variable` lives for code running in `callable_pou`.
   Storage storage_of(const Symbol* variable, const Symbol* callable_pou);
 
@@ -73,6 +85,12 @@ class Lowering {
                          const Symbol* scope, int depth = 0);
   void write_constant(std::vector<uint8_t>& bytes, uint64_t at, const Type* type, const check::ConstValue& value);
   void write_instance(std::vector<uint8_t>& bytes, uint64_t at, const Symbol* pou, int depth);
+
+  // Initial values computed when the program starts (not constants): per owner (a PROGRAM, a
+  // global list, or a function's frame), in declaration order.
+  const std::vector<const Symbol*>& runtime_initialized(const Symbol* owner) const;
+  // The init callable of a program or global list (kNoCallable when it needs none).
+  uint32_t init_callable(const Symbol* owner, uint64_t instance);
 
   void error(const Symbol* where, SyntaxNode node, std::string message);
   std::vector<CompileError>& errors() { return errors_; }
@@ -96,6 +114,9 @@ class Lowering {
   std::unordered_map<std::string, uint32_t> natives_;
   std::unordered_map<std::string, uint64_t> constants_;
   std::vector<CompileError> errors_;
+  uint64_t image_areas_ = 0;  // %I area; %Q and %M follow
+  std::unordered_map<const Symbol*, std::vector<const Symbol*>> runtime_initialized_;
+  std::unordered_map<const Symbol*, uint32_t> init_callables_;
 };
 
 // A place in memory an expression names; Pointer means its address is on the value stack (plus
@@ -113,6 +134,8 @@ class BodyCompiler {
  public:
   BodyCompiler(Lowering& lowering, uint32_t callable_index);
   void compile();
+  // Stores the computed initial values of `owner`'s variables (Lowering::runtime_initialized).
+  void runtime_initial_values(const Symbol* owner);
 
   // --- emission --------------------------------------------------------------------------------
   uint32_t emit(Op op, uint32_t a = 0, int64_t b = 0, uint16_t aux = 0);
@@ -127,6 +150,7 @@ class BodyCompiler {
   void value_as_bool(SyntaxNode node) { value(node, bool_type()); }
   // The place `node` names (a variable, member, element, dereference); nullopt if it names none.
   std::optional<Place> place(SyntaxNode node);
+  Place variable_place(const Symbol* variable);
   void load(const Place& place);
   void address_of(const Place& place);  // pushes the address (Pointer: the offset added)
   // Stores the value on top of the stack (pushed after the place's address, for Pointer places).
@@ -172,7 +196,6 @@ class BodyCompiler {
   std::optional<Place> member_place(SyntaxNode node, const ExprInfo& info);
   std::optional<Place> index_place(SyntaxNode node);
   std::optional<Place> deref_place(SyntaxNode node, const ExprInfo& info);
-  Place variable_place(const Symbol* variable);
   // For a Place that is not already a pointer: turns it into a Pointer place (address pushed).
   Place as_pointer(const Place& place);
 
@@ -196,6 +219,12 @@ class BodyCompiler {
                           const std::vector<check::CallArgument>& arguments, bool want_result, SyntaxNode call);
   // The object of `obj.Prop` (nullopt for THIS, SUPER or a bare Prop); `found` false after an error.
   std::optional<Place> property_object(SyntaxNode access, bool* super, bool* found);
+  // compile_checks.cpp: the project's implicit check function `name`, if this body calls it.
+  const Symbol* check_function(std::string_view name) const;
+  // Passes the value on top through `function` (with constant extra arguments), leaving its result.
+  void call_check(const Symbol* function, const Type* value_type, const std::vector<int64_t>& extra);
+  // Pushes the address a VAR_IN_OUT parameter receives for `argument`.
+  void in_out_address(SyntaxNode argument, const Symbol* parameter);
   void bind_frame_arguments(const Symbol* callee, const std::vector<check::CallArgument>& arguments);
   void copy_outputs(const Symbol* callee, const std::vector<check::CallArgument>& arguments, bool from_frame,
                     const std::optional<Place>& instance);

@@ -68,8 +68,13 @@ class Program {
   uint64_t stack_bytes = 1u << 20;  // call frames
   uint64_t heap_bytes = 1u << 20;   // __NEW
 
-  // Run once before the first cycle (FB_init calls, initial values that are not constants).
-  uint32_t init_callable = kNoCallable;
+  // Run once before the first cycle, in this order (global lists first): the initial values that
+  // are not constants (`p : POINTER TO INT := ADR(x)`), each with THIS = `instance`.
+  struct InitCall {
+    uint32_t callable = kNoCallable;
+    uint64_t instance = 0;
+  };
+  std::vector<InitCall> init_calls;
 
   // The callable whose code holds instruction `pc`.
   const Callable* callable_at(uint32_t pc) const;
