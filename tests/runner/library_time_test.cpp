@@ -227,26 +227,26 @@ TEST(LibraryTime, LongTimersCountNanoseconds) {
 PROGRAM Main
 VAR
   in : BOOL;
-  on : LTON;
-  off : LTOF;
+  delay : LTON;
+  offdelay : LTOF;
   pulse : LTP;
 END_VAR
-on(IN := in, PT := LTIME#600us);
-off(IN := in, PT := LTIME#600us);
+delay(IN := in, PT := LTIME#600us);
+offdelay(IN := in, PT := LTIME#600us);
 pulse(IN := in, PT := LTIME#600us);
 END_PROGRAM
 )", {.cycles = 0, .tick_ns = 250'000});
   ASSERT_TRUE(run->engine) << joined(run->check_errors) << joined(run->compile_errors);
-  EXPECT_EQ(sequence(*run, "in", {"TRUE", "TRUE", "TRUE", "TRUE", "TRUE"}, "on.Q"), "FALSE,FALSE,FALSE,TRUE,TRUE");
-  EXPECT_EQ(run->text("on.ET"), "LTIME#600us");
+  EXPECT_EQ(sequence(*run, "in", {"TRUE", "TRUE", "TRUE", "TRUE", "TRUE"}, "delay.Q"), "FALSE,FALSE,FALSE,TRUE,TRUE");
+  EXPECT_EQ(run->text("delay.ET"), "LTIME#600us");
   EXPECT_EQ(run->text("pulse.Q"), "FALSE");
   EXPECT_EQ(run->text("pulse.ET"), "LTIME#600us");
-  EXPECT_EQ(run->text("off.Q"), "TRUE");
-  EXPECT_EQ(sequence(*run, "in", {"FALSE", "FALSE", "FALSE", "FALSE"}, "off.Q"), "TRUE,TRUE,TRUE,FALSE");
-  EXPECT_EQ(run->text("off.ET"), "LTIME#600us");
-  EXPECT_EQ(run->text("on.Q"), "FALSE");
-  EXPECT_EQ(run->text("on.ET"), "LTIME#0ns");
-  EXPECT_EQ(run->text("pulse.ET"), "LTIME#0ns");
+  EXPECT_EQ(run->text("offdelay.Q"), "TRUE");
+  EXPECT_EQ(sequence(*run, "in", {"FALSE", "FALSE", "FALSE", "FALSE"}, "offdelay.Q"), "TRUE,TRUE,TRUE,FALSE");
+  EXPECT_EQ(run->text("offdelay.ET"), "LTIME#600us");
+  EXPECT_EQ(run->text("delay.Q"), "FALSE");
+  EXPECT_EQ(run->text("delay.ET"), "LTIME#0ms");
+  EXPECT_EQ(run->text("pulse.ET"), "LTIME#0ms");
 }
 
 TEST(LibraryTime, LongTimeClockIsReadable) {
