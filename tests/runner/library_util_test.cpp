@@ -248,7 +248,8 @@ END_PROGRAM
 TEST(LibraryUtil, ProportionalControllerAndLimits) {
   // Textbook fact 66 (000b.md L20312-20390): PD with KP = 2, TV = 0, Y_OFFSET = 0, SET_POINT = 10,
   // ACTUAL = 4, Y_MIN = 0, Y_MAX = 100 gives Y = 12, LIMITS_ACTIVE FALSE; with Y_MAX = 10 Y = 10
-  // and LIMITS_ACTIVE TRUE. MANUAL gives Y_MANUAL; RESET gives Y_OFFSET (AK800 L19968-20019).
+  // and LIMITS_ACTIVE TRUE. MANUAL gives Y_MANUAL; RESET gives Y_OFFSET (AK800 L19968-20019). Here
+  // Y_OFFSET = 1.5, so the unclamped Y is 13.5.
   auto run = run_text(R"(
 PROGRAM Main
 VAR
