@@ -12,6 +12,9 @@ namespace {
 constexpr std::array kBuiltins = {
     // CODESYS 2.3 TIME(): milliseconds since the controller started (OSCAT uses it).
     Builtin{"TIME", "TIME", false, true},
+    // rung's LTIME-resolution clock: nanoseconds since the controller started (the LTIME timers and
+    // RTC in library/ read it; docs/library.md).
+    Builtin{"__LTIME", "LTIME", false, true},
     Builtin{"__NEW", nullptr, false, true},
     Builtin{"__DELETE", nullptr, false, true},
     Builtin{"__ISVALIDREF", "BOOL", false, true},

@@ -390,6 +390,35 @@ std::optional<const Type*> BodyCompiler::builtin_call(std::string_view name, Syn
     return out;
   }
 
+  // --- time and date (library/iec/time.st): the generic ones; the others have ST bodies -----------
+  if ((upper == "MUL_TIME" || upper == "DIV_TIME" || upper == "MUL_LTIME" || upper == "DIV_LTIME") && need(2)) {
+    // What `IN1 * IN2` and `IN1 / IN2` mean: an integer factor scales the count (milliseconds,
+    // nanoseconds), a REAL one is applied in LREAL and rounded as REAL_TO_<int> rounds.
+    const Type* duration = elementary(upper.find("LTIME") != std::string::npos ? "LTIME" : "TIME");
+    const bool multiply = upper.starts_with("MUL");
+    if (is_float_type(Layouts::storage_type(arg_type(1)))) {
+      value(args[0], lreal);
+      value(args[1], lreal);
+      emit(multiply ? Op::MUL_F64 : Op::DIV_F64);
+      convert(lreal, duration);
+      return duration;
+    }
+    value(args[0], duration);
+    value(args[1], duration);
+    emit(multiply ? Op::MUL : Op::DIV_U);
+    convert(elementary("ULINT"), duration);
+    return duration;
+  }
+  if ((upper == "CONCAT_DATE" && need(3)) || (upper == "CONCAT_TOD" && need(4)) || (upper == "CONCAT_DT" && need(7))) {
+    const size_t count = upper == "CONCAT_DATE" ? 3 : upper == "CONCAT_TOD" ? 4 : 7;
+    for (size_t i = 0; i < count; ++i) value(args[i], lint);
+    const DateField what = count == 3 ? DateField::Date : count == 4 ? DateField::TimeOfDay : DateField::DateAndTime;
+    native_call(native_concat_date_time, "CONCAT_DATE_TIME", 0, static_cast<uint16_t>(what));
+    const Type* out = elementary(count == 3 ? "DATE" : count == 4 ? "TOD" : "DT");
+    convert(elementary("ULINT"), out);
+    return out;
+  }
+
   // --- strings ----------------------------------------------------------------------------------
   struct StringFunction {
     const char* name;
@@ -472,6 +501,10 @@ std::optional<const Type*> BodyCompiler::builtin_call(std::string_view name, Syn
   if (upper == "TIME" && args.empty()) {
     native_call(native_time_ms, "TIME");
     return elementary("TIME");
+  }
+  if (upper == "__LTIME" && args.empty()) {
+    native_call(native_time_ns, "__LTIME");
+    return elementary("LTIME");
   }
   if (upper == "__ISVALIDREF" && need(1)) {
     const ExprInfo in = info(args[0]);

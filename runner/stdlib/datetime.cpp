@@ -140,7 +140,17 @@ std::optional<int64_t> parse_point_literal(std::string_view literal, PointKind k
 
 std::string duration_text(int64_t value, TimeUnit unit, bool long_form) {
   const __int128 ns = static_cast<__int128>(value) * (1'000'000'000 / unit_per_second(unit));
-  std::string text = check::duration_literal_text(ns);
+  // Whole milliseconds as the checker writes them, then the microseconds and nanoseconds an LTIME
+  // holds below them (LTIME#1ms500us, LTIME#600us, LTIME#1us5ns).
+  const __int128 magnitude = ns < 0 ? -ns : ns;
+  const auto below_ms = static_cast<int64_t>(magnitude % 1'000'000);
+  std::string text = check::duration_literal_text(magnitude - below_ms);
+  if (below_ms != 0) {
+    if (text.ends_with("#0ms")) text.resize(text.size() - 3);
+    if (below_ms >= 1000) text += fmt::format("{}us", below_ms / 1000);
+    if (below_ms % 1000 != 0) text += fmt::format("{}ns", below_ms % 1000);
+  }
+  if (ns < 0) text.insert(text.find('#') + 1, "-");
   if (long_form && text.starts_with("T#")) text = "LTIME#" + text.substr(2);
   if (long_form && text.starts_with("-T#")) text = "-LTIME#" + text.substr(3);
   return text;

@@ -374,6 +374,31 @@ void native_time_ms(Machine& machine, const Instr&) {
 
 void native_time_ns(Machine& machine, const Instr&) { machine.push_i(static_cast<int64_t>(machine.time_ns())); }
 
+void native_concat_date_time(Machine& machine, const Instr& in) {
+  const auto what = static_cast<DateField>(in.aux);
+  const size_t count = what == DateField::Date ? 3 : what == DateField::TimeOfDay ? 4 : 7;
+  int64_t field[7] = {};
+  for (size_t i = count; i-- > 0;) field[i] = machine.pop().i;
+  // A time of day in milliseconds; fields beyond their range carry over (61 minutes = 1 h 1 min).
+  auto time_of_day = [](const int64_t* at) { return ((at[0] * 60 + at[1]) * 60 + at[2]) * 1000 + at[3]; };
+  // A date in days since 1970; a month outside 1..12 carries into the year, a day beyond the
+  // month's end into the next month (the day count is added to the month's first day).
+  auto days = [](int64_t year, int64_t month, int64_t day) {
+    const int64_t month_index = month - 1;
+    const int64_t years = month_index >= 0 ? month_index / 12 : (month_index - 11) / 12;
+    return days_from_civil(year + years, static_cast<unsigned>(month_index - years * 12 + 1), 1) + day - 1;
+  };
+  int64_t out = 0;
+  if (what == DateField::TimeOfDay) {
+    out = time_of_day(field);
+  } else if (what == DateField::Date) {
+    out = days(field[0], field[1], field[2]) * 86400;
+  } else {
+    out = days(field[0], field[1], field[2]) * 86400 + time_of_day(field + 3) / 1000;
+  }
+  machine.push_i(out);
+}
+
 void native_new(Machine& machine, const Instr&) {
   const uint64_t bytes = machine.pop().u;
   machine.push_i(static_cast<int64_t>(machine.allocate(bytes)));

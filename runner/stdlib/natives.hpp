@@ -81,6 +81,11 @@ void native_from_bcd(Machine& machine, const Instr& in);
 void native_time_ms(Machine& machine, const Instr& in);
 void native_time_ns(Machine& machine, const Instr& in);
 
+// CONCAT_DATE (year, month, day), CONCAT_TOD (hour, minute, second, millisecond), CONCAT_DT (the
+// seven) -> the stored count (DATE/DT seconds since 1970, TOD milliseconds); aux = DateField.
+enum class DateField : uint16_t { Date, TimeOfDay, DateAndTime };
+void native_concat_date_time(Machine& machine, const Instr& in);
+
 // __NEW (bytes) -> address, __DELETE (address) -> nothing.
 void native_new(Machine& machine, const Instr& in);
 void native_delete_block(Machine& machine, const Instr& in);

@@ -8,6 +8,27 @@
 
 namespace rung::run::testing {
 
+std::string sequence(Run& run, std::string_view input, const std::vector<std::string>& values, std::string_view output) {
+  std::string seen;
+  for (const std::string& value : values) {
+    run.set(input, value);
+    EXPECT_TRUE(run.cycles(1)) << run.error();
+    if (!seen.empty()) seen += ",";
+    seen += run.text(output);
+  }
+  return seen;
+}
+
+std::string trace(Run& run, uint64_t count, const std::vector<std::string>& outputs) {
+  std::string seen;
+  for (uint64_t i = 0; i < count; ++i) {
+    EXPECT_TRUE(run.cycles(1)) << run.error();
+    if (!seen.empty()) seen += ",";
+    for (size_t j = 0; j < outputs.size(); ++j) seen += (j ? "/" : "") + run.text(outputs[j]);
+  }
+  return seen;
+}
+
 std::string joined(const std::vector<std::string>& lines) {
   std::string out;
   for (const std::string& line : lines) out += line + "\n";

@@ -44,6 +44,13 @@ std::unique_ptr<Run> run_text(std::string_view source, const RunOptions& options
 std::unique_ptr<Run> run_files(const std::vector<std::pair<std::string, std::string>>& files,
                                const RunOptions& options = {});
 
+// Sets `input` to each of `values` in turn, runs one cycle after each, and returns the texts of
+// `output` after those cycles, joined by commas ("FALSE,TRUE,..."), for block tests cycle by cycle.
+std::string sequence(Run& run, std::string_view input, const std::vector<std::string>& values, std::string_view output);
+// Runs `count` cycles and returns the texts of `outputs` after each, "a/b" per cycle, joined by
+// commas.
+std::string trace(Run& run, uint64_t count, const std::vector<std::string>& outputs);
+
 // The lines of a list, one per line (for failure messages).
 std::string joined(const std::vector<std::string>& lines);
 

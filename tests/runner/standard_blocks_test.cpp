@@ -7,18 +7,6 @@
 namespace rung::run::testing {
 namespace {
 
-// Drives one input through a sequence and records one output after each cycle.
-std::string sequence(Run& run, std::string_view input, const std::vector<std::string>& values, std::string_view output) {
-  std::string seen;
-  for (const std::string& value : values) {
-    run.set(input, value);
-    EXPECT_TRUE(run.cycles(1)) << run.error();
-    if (!seen.empty()) seen += ",";
-    seen += run.text(output);
-  }
-  return seen;
-}
-
 const char* kEdges = R"(
 PROGRAM Main
 VAR
