@@ -272,6 +272,16 @@ const Type* BodyCompiler::value(SyntaxNode node, const Type* target) {
   const ExprInfo in = info(node);
   if (in.value && !in.names_type && kind != "call_expression") {
     const Type* type = target ? target : in.type;
+    // A duration used as a number counts in its own unit (T#1s is 1000 in a TIME, 10^9 in an
+    // LTIME): push it as its type, then convert.
+    const Type* own = Layouts::storage_type(in.type);
+    const Type* wanted = Layouts::storage_type(type);
+    if (in.value->kind == check::ConstValue::Kind::Duration && own && own->kind == TypeKind::Duration && wanted &&
+        wanted->kind != TypeKind::Duration) {
+      push_constant(*in.value, in.type);
+      convert(in.type, type);
+      return type;
+    }
     push_constant(*in.value, type);
     return type;
   }
