@@ -122,7 +122,7 @@ void sfc_control(Machine& machine, const Instr& instr) {
     std::memset(state, 0, state_size);
     state[0] = 1;
     for (uint32_t i = 0; i < header.steps; ++i) {
-      if (read<uint32_t>(initial + 4 * i) != 0) activate(i);
+      if (read<uint32_t>(initial + uint64_t{4} * i) != 0) activate(i);
     }
   }
   for (uint32_t i = 0; i < header.steps; ++i) {
