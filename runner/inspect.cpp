@@ -267,6 +267,19 @@ std::string value_text(const CompiledProject& project, const Machine& machine, c
   return text_from_json(value_json(project, machine, ref), ref.type, layouts_of(project));
 }
 
+// step.X and step.T of an SFC body: the state its chart keeps in the instance (SfcLayout).
+std::optional<ValueRef> sfc_flag(Layouts& layouts, const check::Symbol* pou, uint64_t instance,
+                                 const std::vector<std::string>& parts, size_t at) {
+  if (!pou || at + 1 >= parts.size() || !check::is_pou_kind(pou->kind)) return std::nullopt;
+  const PouLayout& layout = layouts.pou(pou);
+  const int step = layout.sfc ? layout.sfc->step_index(parts[at]) : -1;
+  if (step < 0) return std::nullopt;
+  const uint64_t address = instance + layout.sfc->step_offset(static_cast<size_t>(step));
+  if (check::names_equal(parts[at + 1], "X")) return ValueRef{layouts.model().types().elementary("BOOL"), address};
+  if (check::names_equal(parts[at + 1], "T")) return ValueRef{layouts.model().types().elementary("TIME"), address + 4};
+  return std::nullopt;
+}
+
 std::optional<ValueRef> resolve_path(const CompiledProject& project, const Machine& machine, std::string_view path,
                                      std::string* error) {
   Layouts& layouts = layouts_of(project);
@@ -309,6 +322,7 @@ std::optional<ValueRef> resolve_path(const CompiledProject& project, const Machi
     if (check::names_equal(program.name, parts[0]) && parts.size() > 1) {
       ref = find_in(program.variables, parts[1]);
       next = 2;
+      if (!ref && (ref = sfc_flag(layouts, program.program, program.address, parts, 1))) next = 3;
       break;
     }
   }
@@ -384,6 +398,13 @@ std::optional<ValueRef> resolve_path(const CompiledProject& project, const Machi
       ref = variable_ref(machine, view);
       found = true;
       break;
+    }
+    if (!found && type->kind == check::TypeKind::Pou) {
+      if (auto flag = sfc_flag(layouts, type->declaration, ref->address, parts, next)) {
+        ref = flag;
+        ++next;
+        continue;
+      }
     }
     if (!found) {
       if (error) *error = fmt::format("'{}': there is no member '{}'", path, part);

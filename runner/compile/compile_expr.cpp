@@ -612,6 +612,7 @@ void BodyCompiler::store(const Place& place, const Type* value_type) {
 std::optional<Place> BodyCompiler::place(SyntaxNode node) {
   const std::string_view kind = node.kind();
   if (kind == "parenthesized_expression" && node.named_child_count() >= 1) return place(node.named_child(0));
+  if (auto special = special_place(node)) return special;  // IL's current result, SFC's step.X
   set_position(node);
   const ExprInfo in = info(node);
   if (kind == "identifier" || kind == "global_reference") return identifier_place(node, in);

@@ -129,7 +129,6 @@ void BodyCompiler::assignment(SyntaxNode left, SyntaxNode right, std::string_vie
     if (at.mode == Place::Mode::Pointer) at = as_pointer(at);
     value_as_bool(right);
     const uint32_t skip = emit(Op::JZ);
-    if (at.mode == Place::Mode::Pointer) emit(Op::DUP);
     if (at.bit >= 0) {
       if (at.mode == Place::Mode::Pointer) emit(Op::DUP);
       load(at);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "checker/symbols/names.hpp"
 #include "runner/vm/program.hpp"
 
 namespace rung::run {
@@ -21,7 +22,40 @@ bool is_frame_pou(const Symbol* pou) {
   return pou->kind == SymbolKind::Function || pou->kind == SymbolKind::Method;
 }
 
+// The steps of an SFC network and what their action associations name (see SfcLayout).
+SfcLayout sfc_layout(SyntaxNode network) {
+  SfcLayout sfc;
+  for (uint32_t i = 0; i < network.named_child_count(); ++i) {
+    SyntaxNode step = network.named_child(i);
+    SyntaxNode name = step.child_by_field("name");
+    if (step.kind() != "sfc_step" || !name || sfc.step_index(name.text()) >= 0) continue;
+    sfc.steps.push_back(check::upper_name(name.text()));
+    sfc.initial.push_back(step.child(0).kind() == "INITIAL_STEP");
+    for (uint32_t j = 0; j < step.named_child_count(); ++j) {
+      SyntaxNode association = step.named_child(j);
+      SyntaxNode action = association.child_by_field("name");
+      if (association.kind() != "sfc_action" || !action || sfc.action_index(action.text()) >= 0) continue;
+      sfc.actions.push_back(check::upper_name(action.text()));
+    }
+  }
+  return sfc;
+}
+
 }  // namespace
+
+int SfcLayout::step_index(std::string_view name) const {
+  for (size_t i = 0; i < steps.size(); ++i) {
+    if (check::names_equal(steps[i], name)) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int SfcLayout::action_index(std::string_view name) const {
+  for (size_t i = 0; i < actions.size(); ++i) {
+    if (check::names_equal(actions[i], name)) return static_cast<int>(i);
+  }
+  return -1;
+}
 
 const Type* Layouts::storage_type(const Type* type) {
   for (int depth = 0; type && depth < kMaxDepth; ++depth) {
@@ -197,6 +231,15 @@ const PouLayout& Layouts::pou(const Symbol* symbol) {
       offset += part.size;
       alignment = std::max(alignment, part.alignment);
       layout.instance_variables.push_back(member);
+    }
+    // An SFC body keeps its steps' and actions' state after the variables (see SfcLayout).
+    if (SyntaxNode body = symbol->node ? symbol->node.child_by_field("body") : SyntaxNode();
+        body && body.kind() == "sfc_network") {
+      SfcLayout sfc = sfc_layout(body);
+      offset = round_up(offset, 8);
+      sfc.offset = offset;
+      offset += sfc.size();
+      layout.sfc = std::move(sfc);
     }
     layout.instance_size = round_up(offset, alignment);
     layout.instance_alignment = alignment;

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -22,6 +24,28 @@ struct TypeLayout {
 // How a value of a type travels on the value stack.
 enum class Scalar : uint8_t { None, U8, S8, U16, S16, U32, S32, I64, U64, F32, F64 };
 
+// The state an SFC body keeps in its POU's instance, after the POU's variables (compile_sfc.cpp
+// reads and writes it): an 8-byte header (byte 0: the chart has started), then per step 16 bytes
+// (X, two bytes for the transitions' bookkeeping, T as a TIME at +4, the activation time in ns at
+// +8), then per associated action or BOOL variable 96 bytes (its action control state).
+struct SfcLayout {
+  static constexpr uint64_t kHeaderBytes = 8;
+  static constexpr uint64_t kStepBytes = 16;
+  static constexpr uint64_t kActionBytes = 96;
+  uint64_t offset = 0;               // in the instance
+  std::vector<std::string> steps;    // upper-case names, in source order
+  std::vector<bool> initial;         // parallel to steps
+  std::vector<std::string> actions;  // upper-case names, in the order associations first name them
+  uint64_t step_offset(size_t step) const { return offset + kHeaderBytes + kStepBytes * step; }
+  uint64_t action_offset(size_t action) const {
+    return offset + kHeaderBytes + kStepBytes * steps.size() + kActionBytes * action;
+  }
+  uint64_t size() const { return kHeaderBytes + kStepBytes * steps.size() + kActionBytes * actions.size(); }
+  // The index of a step or action by name; -1 when there is none.
+  int step_index(std::string_view name) const;
+  int action_index(std::string_view name) const;
+};
+
 // A POU's storage: its instance (FB, program, class) and its frame (one call's locals).
 struct PouLayout {
   uint64_t instance_size = 0;
@@ -31,6 +55,7 @@ struct PouLayout {
   std::vector<const check::Symbol*> frame_variables;     // parameters, locals, temps, the result
   uint64_t result_offset = 0;                            // in the frame (functions, methods, GET)
   uint64_t param_bytes = 0;  // the result and parameters come first: the same offsets in overrides
+  std::optional<SfcLayout> sfc;  // a PROGRAM's or FUNCTION_BLOCK's SFC body: its state at the instance's end
 };
 
 class Layouts {

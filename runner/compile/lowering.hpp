@@ -230,6 +230,42 @@ class BodyCompiler {
                     const std::optional<Place>& instance);
   const Type* take_result(const Symbol* callee, bool want_result);
 
+  // --- IL and SFC (compile_il.cpp, compile_sfc.cpp) ------------------------------------------
+  // IL's current result (CR): one value-stack slot kept in a frame temporary, its type known here.
+  struct IlResult {
+    uint64_t slot = 0;
+    const Type* type = nullptr;  // what the slot holds
+    ExprInfo info;               // the checker's view of it (for the next operator's typing)
+    SyntaxNode loaded;           // the operand of the LD that set it, while nothing changed it since
+  };
+  // An operand of an IL operator: a syntax node, or the result of parentheses (a slot).
+  struct IlOperand {
+    SyntaxNode node;
+    const IlResult* inner = nullptr;
+    bool negate = false;
+  };
+  void il_sequence(SyntaxNode parent);
+  void il_instruction(SyntaxNode instruction);
+  void il_deferred(SyntaxNode instruction, std::string_view name);
+  void il_load(SyntaxNode operand, bool negate);
+  void il_combine(std::string_view name, const ExprInfo& operand_info, const IlOperand& operand, SyntaxNode where);
+  void il_push_operand(const IlOperand& operand, const Type* target);
+  void il_store(SyntaxNode operand, bool negate, int set_value);
+  bool il_fb_input(std::string_view name, SyntaxNode operand);
+  void il_call(SyntaxNode operand);
+  void il_function(SyntaxNode instruction, SyntaxNode op_node);
+  void il_set(const Type* type, const ExprInfo& info);
+  void il_negate(const Type* type);
+  // IL's CR where a function call takes it as first argument (the operator node), SFC's step.X and
+  // step.T: places that no declaration names (called first by place()).
+  std::optional<Place> special_place(SyntaxNode node);
+  // The SFC layout that `step.X` in this body refers to (the POU's or, in an action, its owner's).
+  const SfcLayout* sfc_layout_here();
+  void sfc_step_macro(SyntaxNode macro);
+  IlResult il_;
+  SyntaxNode il_first_argument_;
+  // --- end of IL and SFC -----------------------------------------------------------------------
+
   Lowering& lowering_;
   uint32_t callable_index_;
   const Symbol* pou_;
