@@ -1,5 +1,6 @@
 #include "runner/inspect.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -31,7 +32,12 @@ std::optional<Slot> read_scalar(const Machine& machine, Scalar scalar, uint64_t 
   Slot slot{};
   switch (scalar) {
     case Scalar::U8: { uint8_t v; if (!read_bytes(machine, address, &v, 1)) return std::nullopt; slot.u = v; break; }
-    case Scalar::S8: { int8_t v; if (!read_bytes(machine, address, &v, 1)) return std::nullopt; slot.i = v; break; }
+    case Scalar::S8: {
+      uint8_t v;
+      if (!read_bytes(machine, address, &v, 1)) return std::nullopt;
+      slot.i = v >= 128 ? static_cast<int64_t>(v) - 256 : static_cast<int64_t>(v);  // sign-extend
+      break;
+    }
     case Scalar::U16: { uint16_t v; if (!read_bytes(machine, address, &v, 2)) return std::nullopt; slot.u = v; break; }
     case Scalar::S16: { int16_t v; if (!read_bytes(machine, address, &v, 2)) return std::nullopt; slot.i = v; break; }
     case Scalar::U32: { uint32_t v; if (!read_bytes(machine, address, &v, 4)) return std::nullopt; slot.u = v; break; }
@@ -441,8 +447,8 @@ bool write_value(const CompiledProject& project, Machine& machine, const ValueRe
     std::string bytes = wide ? utf8_to_utf16le(content) : utf8_to_single_byte(content);
     const size_t unit = wide ? 2 : 1;
     bytes.resize(std::min<size_t>(bytes.size(), type->length * unit));
-    std::memcpy(at, bytes.data(), bytes.size());
-    std::memset(at + bytes.size(), 0, unit);
+    std::copy(bytes.begin(), bytes.end(), at);
+    std::fill(at + bytes.size(), at + bytes.size() + unit, uint8_t{0});
     return true;
   }
   const Scalar scalar = Layouts::scalar_of(type);

@@ -118,17 +118,17 @@ PROGRAM PLC_PRG
 VAR
   n : INT := 3;
   p : POINTER TO INT := ADR(n);
-  viaGlobal, viaLocal, twice : INT;
+  viaGlobal, viaLocal, result : INT;
 END_VAR
 viaGlobal := gPointer^;
 viaLocal := p^;
-twice := Twice(21);
+result := Twice(21);
 END_PROGRAM
 )"}});
   ASSERT_CLEAN(run);
   EXPECT_EQ(run->text("viaGlobal"), "7");
   EXPECT_EQ(run->text("viaLocal"), "3");
-  EXPECT_EQ(run->text("twice"), "42");
+  EXPECT_EQ(run->text("result"), "42");
 }
 
 TEST(RunCalls, InOutConstantAndEmptyActualParameters) {
