@@ -44,6 +44,9 @@ T load(const uint8_t* memory, uint64_t address) {
   return value;
 }
 
+// A SINT's byte as a 64-bit slot (avoids char-signedness conversions).
+int64_t sign_extend8(uint8_t byte) { return static_cast<int64_t>(byte ^ 0x80u) - 0x80; }
+
 template <typename T>
 void store(uint8_t* memory, uint64_t address, T value) {
   std::memcpy(memory + address, &value, sizeof(T));
@@ -273,7 +276,7 @@ bool Machine::execute(uint32_t entry) {
 
 #define RUNG_LOADS(MODE, BASE)                                                                   \
   case Op::LD_U8_##MODE: (sp++)->i = load<uint8_t>(mem, (BASE) + in.a); NEXT();                   \
-  case Op::LD_S8_##MODE: (sp++)->i = load<int8_t>(mem, (BASE) + in.a); NEXT();                    \
+  case Op::LD_S8_##MODE: (sp++)->i = sign_extend8(load<uint8_t>(mem, (BASE) + in.a)); NEXT();      \
   case Op::LD_U16_##MODE: (sp++)->i = load<uint16_t>(mem, (BASE) + in.a); NEXT();                 \
   case Op::LD_S16_##MODE: (sp++)->i = load<int16_t>(mem, (BASE) + in.a); NEXT();                  \
   case Op::LD_U32_##MODE: (sp++)->i = load<uint32_t>(mem, (BASE) + in.a); NEXT();                 \
@@ -286,25 +289,25 @@ bool Machine::execute(uint32_t entry) {
       RUNG_LOADS(F, frame)
 #undef RUNG_LOADS
 
-#define RUNG_LOAD_P(KIND, TYPE, FIELD)                        \
+#define RUNG_LOAD_P(KIND, TYPE, FIELD, EXTEND)                \
   case Op::LD_##KIND##_P: {                                   \
     const uint64_t address = TOP().u;                         \
     if (!valid(address, sizeof(TYPE))) [[unlikely]] {         \
       fail(address < kNullGuard ? TrapKind::NullPointer : TrapKind::InvalidPointer, {}); \
       return false;                                           \
     }                                                         \
-    TOP().FIELD = load<TYPE>(mem, address);                   \
+    TOP().FIELD = EXTEND(load<TYPE>(mem, address));           \
     NEXT();                                                   \
   }
-      RUNG_LOAD_P(U8, uint8_t, i)
-      RUNG_LOAD_P(S8, int8_t, i)
-      RUNG_LOAD_P(U16, uint16_t, i)
-      RUNG_LOAD_P(S16, int16_t, i)
-      RUNG_LOAD_P(U32, uint32_t, i)
-      RUNG_LOAD_P(S32, int32_t, i)
-      RUNG_LOAD_P(I64, int64_t, i)
-      RUNG_LOAD_P(F32, float, f32)
-      RUNG_LOAD_P(F64, double, f64)
+      RUNG_LOAD_P(U8, uint8_t, i, )
+      RUNG_LOAD_P(S8, uint8_t, i, sign_extend8)
+      RUNG_LOAD_P(U16, uint16_t, i, )
+      RUNG_LOAD_P(S16, int16_t, i, )
+      RUNG_LOAD_P(U32, uint32_t, i, )
+      RUNG_LOAD_P(S32, int32_t, i, )
+      RUNG_LOAD_P(I64, int64_t, i, )
+      RUNG_LOAD_P(F32, float, f32, )
+      RUNG_LOAD_P(F64, double, f64, )
 #undef RUNG_LOAD_P
 
 #define RUNG_STORES(MODE, BASE)                                                                           \
@@ -444,7 +447,7 @@ bool Machine::execute(uint32_t entry) {
         TOP().i = integer_power(TOP().i, exponent);
         NEXT();
       }
-      case Op::WRAP_S8: TOP().i = static_cast<int8_t>(TOP().u); NEXT();
+      case Op::WRAP_S8: TOP().i = sign_extend8(static_cast<uint8_t>(TOP().u)); NEXT();
       case Op::WRAP_U8: TOP().u = static_cast<uint8_t>(TOP().u); NEXT();
       case Op::WRAP_S16: TOP().i = static_cast<int16_t>(TOP().u); NEXT();
       case Op::WRAP_U16: TOP().u = static_cast<uint16_t>(TOP().u); NEXT();
