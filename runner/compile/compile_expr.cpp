@@ -169,7 +169,11 @@ void BodyCompiler::push_constant(const check::ConstValue& value, const Type* typ
   // Sign- or zero-extend to the slot representation of the type.
   switch (scalar) {
     case Scalar::U8: pushed = static_cast<uint8_t>(pushed); break;
-    case Scalar::S8: pushed = static_cast<int8_t>(pushed); break;
+    case Scalar::S8: {
+      const auto byte = static_cast<uint8_t>(pushed);
+      pushed = static_cast<int64_t>(byte ^ 0x80u) - 0x80;  // sign-extend the low byte
+      break;
+    }
     case Scalar::U16: pushed = static_cast<uint16_t>(pushed); break;
     case Scalar::S16: pushed = static_cast<int16_t>(pushed); break;
     case Scalar::U32: pushed = static_cast<uint32_t>(pushed); break;
@@ -326,7 +330,8 @@ const Type* BodyCompiler::comparison(std::string_view op, SyntaxNode left, Synta
   const Type* rt = Layouts::storage_type(r.type);
   if (is_string_type(lt) || is_string_type(rt)) {
     const bool wide = (lt && lt->kind == TypeKind::WString) || (rt && rt->kind == TypeKind::WString);
-    value(left, l.untyped_literal ? (wide ? rt : rt) : nullptr);
+    // A literal takes the other side's string type (its capacity does not matter here).
+    value(left, l.untyped_literal ? rt : nullptr);
     value(right, r.untyped_literal ? lt : nullptr);
     emit(Op::NATIVE, lowering_.native(wide ? native_wstring_compare : native_string_compare,
                                       wide ? "WSTRING_COMPARE" : "STRING_COMPARE"));

@@ -30,10 +30,15 @@ CallableKind callable_kind(const Symbol* pou) {
 }
 
 std::string qualified_name(const Symbol* pou) {
-  std::string name(pou->name);
+  std::vector<std::string_view> parts{pou->name};
   for (const Symbol* owner = pou->owner; owner; owner = owner->owner) {
     if (!check::is_pou_kind(owner->kind)) break;
-    name = std::string(owner->name) + "." + name;
+    parts.push_back(owner->name);
+  }
+  std::string name;
+  for (auto part = parts.rbegin(); part != parts.rend(); ++part) {
+    if (!name.empty()) name += '.';
+    name += *part;
   }
   return name;
 }
