@@ -346,6 +346,8 @@ module.exports = grammar({
     // -----------------------------------------------------------------------
     program_declaration: $ => prec.right(seq(
       kw('PROGRAM'),
+      // TwinCAT: PROGRAM INTERNAL P (access modifier before the name, as for FUNCTION_BLOCK)
+      repeat($.modifier),
       field('name', $.identifier),
       ...pouContents($),
       optional(kw('END_PROGRAM')),
