@@ -435,7 +435,9 @@ module.exports = grammar({
       field('name', $.identifier),
       repeat($.modifier),
       optional(seq(':', field('type', $._type_spec), repeat($.modifier))),
-      repeat($.var_block),
+      // TwinCAT code may end the header with ';' (METHOD PUBLIC M : BOOL;). It belongs to the
+      // header when variable blocks follow; otherwise it is the body's empty statement.
+      choice(prec(1, seq(';', repeat1($.var_block))), repeat($.var_block)),
       optional(field('body', $._body)),
       optional(kw('END_METHOD')),
     )),

@@ -179,6 +179,32 @@ TEST(Check, ExplicitDecimalLiteral) {
             (Codes{"E102"}));
 }
 
+TEST(Check, TwinCatHeadersWithModifiersAndSemicolons) {
+  // PROGRAM INTERNAL Roots is a program named Roots; a ';' after a method header
+  // (METHOD PUBLIC SetBuffer : BOOL;) keeps the method's parameters, locals and result in scope.
+  const std::string text =
+      "PROGRAM INTERNAL Roots\n"
+      "VAR n : INT; END_VAR\n"
+      "n := n + 1;\n"
+      "END_PROGRAM\n"
+      "FUNCTION_BLOCK FB_Buffer\n"
+      "VAR nSize : UDINT; END_VAR\n"
+      "METHOD PUBLIC SetBuffer : BOOL;\n"
+      "VAR_INPUT nLength : UDINT; END_VAR\n"
+      "VAR nCopied : UDINT; END_VAR\n"
+      "nCopied := MIN(nLength, 10);\n"
+      "nSize := nCopied;\n"
+      "SetBuffer := nCopied > 0;\n"
+      "END_METHOD\n"
+      "END_FUNCTION_BLOCK\n"
+      "PROGRAM Main\n"
+      "VAR fb : FB_Buffer; ok : BOOL; END_VAR\n"
+      "ok := fb.SetBuffer(nLength := 1);\n"
+      "Roots();\n"
+      "END_PROGRAM\n";
+  EXPECT_EQ(codes_of(text, project::Profile::Twincat), Codes{});
+}
+
 TEST(Check, UnreadableFileInTheMiddleKeepsLaterFilesApart) {
   // Files are parsed and their symbols collected on several threads under the ids they will get;
   // a file that cannot be read shifts the ids of every file after it.
