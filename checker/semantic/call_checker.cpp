@@ -326,8 +326,15 @@ ExprInfo BodyChecker::check_arguments(const Symbol* callee, bool instance_call,
     if (profile.string_positions_are_uint && library_function && is_string_position(callee, *parameter)) {
       parameter_type = types_.elementary("UINT");
     }
-    if (parameter->section == ast::VarSection::InOut && !value_info.assignable && !value_info.value &&
-        !value_info.type->is_unknown()) {
+    // VAR_IN_OUT CONSTANT is passed by reference but read only: CODESYS and TwinCAT accept
+    // constants and expressions for it, and strings of any length.
+    const bool constant_in_out = parameter->section == ast::VarSection::InOut && parameter->symbol->has(kConstant);
+    if (constant_in_out) {
+      const Type* from = underlying(value_info.type);
+      const Type* to = underlying(parameter_type);
+      if (is_string_like(from) && is_string_like(to) && from->kind == to->kind) continue;
+    } else if (parameter->section == ast::VarSection::InOut && !value_info.assignable && !value_info.value &&
+               !value_info.type->is_unknown()) {
       report(codes::kInOutNotAssignable,
              fmt::format("'{}' is VAR_IN_OUT: pass a variable, not an expression", parameter->symbol->name),
              value.range());

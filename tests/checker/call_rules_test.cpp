@@ -206,6 +206,35 @@ TEST(CallRules, LongerStringOutputBoundToAShorterVariableWarns) {
   EXPECT_EQ(found(text, Profile::Codesys), Found{"E106@6?"});
 }
 
+// --- E305/E106: VAR_IN_OUT CONSTANT takes constants, expressions and strings of any length ------
+
+TEST(CallRules, InOutConstantTakesConstantsExpressionsAndLongerStrings) {
+  // CODESYS and TwinCAT pass VAR_IN_OUT CONSTANT by reference without letting the callee write it.
+  const std::string text =
+      "FUNCTION Log : BOOL\n"                                                      // 1
+      "VAR_IN_OUT CONSTANT\n"                                                      // 2
+      "  sText : STRING(10);\n"                                                    // 3
+      "  nLevel : INT;\n"                                                          // 4
+      "END_VAR\n"                                                                  // 5
+      "VAR_IN_OUT nCount : INT; END_VAR\n"                                         // 6
+      "Log := TRUE;\n"                                                             // 7
+      "END_FUNCTION\n"                                                             // 8
+      "PROGRAM Main\n"                                                             // 9
+      "VAR\n"                                                                      // 10
+      "  sLong : STRING(80);\n"                                                    // 11
+      "  n : INT;\n"                                                               // 12
+      "  ok : BOOL; sWide : WSTRING(10);\n"                                        // 13
+      "END_VAR\n"                                                                  // 14
+      "ok := Log(sText := 'a text longer than ten', nLevel := 3, nCount := n);\n"  // 15
+      "ok := Log(sText := sLong, nLevel := n + 1, nCount := n);\n"                 // 16
+      "ok := Log(sText := sLong, nLevel := n, nCount := n + 1);\n"                 // 17
+      "ok := Log(sText := sWide, nLevel := 1, nCount := n);\n"                     // 18
+      "END_PROGRAM\n";
+  for (Profile profile : {Profile::Codesys, Profile::Twincat}) {
+    EXPECT_EQ(found(text, profile), (Found{"E305@17", "E105@18?"}));
+  }
+}
+
 // --- E104: arithmetic on bit strings ---------------------------------------------------------
 
 TEST(CallRules, ArithmeticOnBitStringsDependsOnTheProfile) {
