@@ -27,6 +27,15 @@ TypeKind named_kind_of(const Symbol& symbol) {
   return TypeKind::Alias;
 }
 
+// The variable declared by the first name of `variable`'s declaration (`a` of `a, b : T`); the
+// variable itself when it is the first, nullptr when its owner does not know the name.
+Symbol* first_declared(const Symbol& variable) {
+  const std::vector<SyntaxNode> names = variable.node.children_by_field("name");
+  if (names.empty() || !variable.owner) return nullptr;
+  Symbol* first = variable.owner->own_member(names.front().text());
+  return first && first->node == variable.node ? first : nullptr;
+}
+
 // The generic parameters of the FUNCTION a name is used in: FUNCTION F<T : ANY_NUM>. Only a
 // FUNCTION has them (grammar field type_parameters); asking other scopes would walk every child
 // of every GVL, STRUCT and FB for each type name, which made linking quadratic.
@@ -247,8 +256,18 @@ const Type* ProjectModel::named_type_of(const Symbol* symbol) const {
 void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagnostics) {
   switch (symbol.kind) {
     case SymbolKind::Variable:
-      if (!symbol.type)
-        symbol.type = symbol.type_node ? resolve_type(symbol.type_node, symbol.owner, &diagnostics) : types_->unknown();
+      if (!symbol.type) {
+        // `a, b : (X, Y)` declares one implicit enumeration: b takes a's type.
+        Symbol* first = symbol.type_node && symbol.type_node.kind() == "enum_type" ? first_declared(symbol) : nullptr;
+        if (first && first != &symbol) {
+          if (!first->type) resolve_symbol(*first, diagnostics);
+          symbol.type = first->type;
+        } else {
+          symbol.type =
+              symbol.type_node ? resolve_type(symbol.type_node, symbol.owner, &diagnostics) : types_->unknown();
+        }
+      }
+      if (!symbol.ordered.empty()) compute_enum_values(symbol);  // an implicit enumeration's values
       break;
     case SymbolKind::DataType: {
       const Type* type = type_of(&symbol);
@@ -265,7 +284,11 @@ void ProjectModel::resolve_symbol(Symbol& symbol, std::vector<Diagnostic>& diagn
       resolve_bases(symbol, diagnostics);
       break;
     }
-    case SymbolKind::EnumValue: symbol.type = symbol.owner ? type_of(symbol.owner) : types_->unknown(); break;
+    case SymbolKind::EnumValue:
+      // The owner (an enum type, or the variable of an implicit enumeration) is resolved first:
+      // it was declared, and so created, before its values.
+      symbol.type = symbol.owner ? type_of(symbol.owner) : types_->unknown();
+      break;
     case SymbolKind::Program:
     case SymbolKind::Function:
     case SymbolKind::FunctionBlock:
@@ -611,7 +634,10 @@ const Symbol* ProjectModel::find_local_enum_value(const Symbol* scope, std::stri
   for (const Symbol* s = scope; s; s = s->owner) {
     if (!is_pou_kind(s->kind)) continue;
     for (const Symbol* member : s->ordered) {
-      if (member->kind != SymbolKind::DataType || member->has(kQualifiedOnly)) continue;
+      // Local enum types, and variables declared with an implicit enumeration (their values).
+      const bool enum_holder = (member->kind == SymbolKind::DataType && !member->has(kQualifiedOnly)) ||
+                               (member->kind == SymbolKind::Variable && !member->members.empty());
+      if (!enum_holder) continue;
       if (const Symbol* value = member->own_member(name); value && value->kind == SymbolKind::EnumValue) return value;
     }
   }

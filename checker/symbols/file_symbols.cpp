@@ -247,6 +247,7 @@ class Collector {
     }
     const ast::VarDeclaration::Parts parts = declaration.parts();
     const SyntaxNode type = type_is_reliable(parts) ? parts.type : SyntaxNode();
+    Symbol* first = nullptr;
     for (SyntaxNode name : parts.names) {
       Symbol& variable = make(SymbolKind::Variable, name, declaration.node(), &owner);
       variable.section = section;
@@ -256,6 +257,18 @@ class Collector {
       variable.flags |= flags | attribute_flags(attributes);
       if (parts.initial_value) variable.flags |= kHasInitializer;
       add_member(owner, variable);
+      if (!first) first = &variable;
+    }
+    // An implicit enumeration (eState : (WAITING, RUNNING);): its values are members of the
+    // first variable declared with it, which gives them their type (ProjectModel::
+    // find_local_enum_value finds them from the POU's code).
+    if (first && type && type.kind() == "enum_type") {
+      // A value written twice is reported by the name checks (check_enumerators), not as E003.
+      for (SyntaxNode value : type.children_of_kind("enum_value")) {
+        Symbol& enumerator = make(SymbolKind::EnumValue, value.child_by_field("name"), value, first);
+        first->ordered.push_back(&enumerator);
+        if (!enumerator.name.empty()) first->members.emplace(enumerator.name, &enumerator);
+      }
     }
   }
 

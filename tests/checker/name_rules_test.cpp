@@ -136,6 +136,34 @@ TEST(NameRules, LocalVariableHidesEnumValuesOfTheSameName) {
   EXPECT_EQ(found(kTwoColorEnums + "PROGRAM P\nVAR blue : INT; END_VAR\nblue := 1;\nEND_PROGRAM\n"), Found{});
 }
 
+TEST(NameRules, ImplicitEnumerationValuesAreNamesOfTheirPou) {
+  // TwinCAT/CODESYS: `eState : (WAITING, RUNNING);` declares the values where the variable is
+  // declared; the block's methods see them, and they have the variable's type.
+  const std::string text =
+      "FUNCTION_BLOCK FB_Machine\n"                             // 1
+      "VAR\n"                                                   // 2
+      "  eState : (WAITING, RUNNING := 5, DONE) := WAITING;\n"  // 3
+      "  eOther, eCopy : (IDLE, BUSY);\n"                       // 4
+      "  n : INT;\n"                                            // 5
+      "END_VAR\n"                                               // 6
+      "CASE eState OF\n"                                        // 7
+      "  WAITING: eState := RUNNING;\n"                         // 8
+      "  RUNNING, DONE: eState := WAITING;\n"                   // 9
+      "END_CASE\n"                                              // 10
+      "eOther := BUSY;\n"                                       // 11
+      "eCopy := IDLE;\n"                                        // 12
+      "METHOD Start : BOOL\n"                                   // 13
+      "Start := eState = WAITING;\n"                            // 14
+      "eState := RUNNING;\n"                                    // 15
+      "END_METHOD\n"                                            // 16
+      "END_FUNCTION_BLOCK\n"                                    // 17
+      "PROGRAM P\n"                                             // 18
+      "VAR b : BOOL; END_VAR\n"                                 // 19
+      "b := WAITING = RUNNING;\n"                               // 20
+      "END_PROGRAM\n";
+  EXPECT_EQ(found(text), (Found{"E001@20", "E001@20"}));
+}
+
 // --- global scope operator `.x` -------------------------------------------------------------------
 
 TEST(NameRules, LeadingDotNamesTheGlobalEvenWhenALocalHidesIt) {
