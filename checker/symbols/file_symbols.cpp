@@ -420,7 +420,11 @@ std::optional<Attribute> parse_attribute_pragma(std::string_view text) {
   i = skip_space(i);
   if (text.substr(i, 2) == ":=") {
     i = skip_space(i + 2);
-    if (auto value = read_quoted(i)) attribute.value = *value;
+    // The value ends at its last quote: it may hold apostrophes ('... we're ...').
+    if (i < text.size() && (text[i] == '\'' || text[i] == '"')) {
+      const size_t close = text.rfind(text[i]);
+      if (close > i) attribute.value = std::string(text.substr(i + 1, close - i - 1));
+    }
   }
   return attribute;
 }

@@ -178,10 +178,15 @@ static bool scan_pragma_content(TSLexer *lexer, const bool *valid_symbols) {
 
   /* Up to the closing brace; quoted strings may hold a brace, and Beremiz
    * inline C code "{{ ... }}" may hold balanced braces. The quoted values of
-   * attributes may span lines ({attribute 'pytmc' := '<newline> pv: X ...'});
-   * elsewhere a quote ends at the end of its line (an apostrophe in a
-   * message such as {warning 'don't'} must not swallow the file). */
-  bool multiline_quotes = kind == ATTRIBUTE_PRAGMA;
+   * attributes may span lines ({attribute 'pytmc' := '<newline> pv: X ...'})
+   * and hold apostrophes (... we're ...): there a quote ends the string only
+   * where the attribute's name or value ends, before ":=" or the closing
+   * brace. Elsewhere a quote ends at the end of its line (an apostrophe in a
+   * message such as {warning 'don't'} must not swallow the file). An
+   * attribute whose string never ends that way (a value being typed) ends at
+   * its first inner quote, as if that quote had closed the string. */
+  bool attribute = kind == ATTRIBUTE_PRAGMA;
+  bool fallback_end = false;
   unsigned depth = 0;
   while (!lexer->eof(lexer)) {
     int32_t c = lexer->lookahead;
@@ -194,17 +199,28 @@ static bool scan_pragma_content(TSLexer *lexer, const bool *valid_symbols) {
     if (c == '\'' || c == '"') {
       int32_t quote = c;
       advance(lexer);
-      while (!lexer->eof(lexer) && lexer->lookahead != quote &&
-             (multiline_quotes || !is_newline(lexer->lookahead))) {
-        if (lexer->lookahead == '$') advance(lexer);
-        if (!lexer->eof(lexer)) advance(lexer);
+      for (;;) {
+        while (!lexer->eof(lexer) && lexer->lookahead != quote &&
+               (attribute || !is_newline(lexer->lookahead))) {
+          if (lexer->lookahead == '$') advance(lexer);
+          if (!lexer->eof(lexer)) advance(lexer);
+        }
+        if (lexer->lookahead != quote) break;
+        advance(lexer);
+        if (!attribute) break;
+        /* The blanks after a quote belong to the pragma either way. */
+        while (is_horizontal_space(lexer->lookahead) || is_newline(lexer->lookahead)) advance(lexer);
+        if (lexer->eof(lexer) || lexer->lookahead == '}' || lexer->lookahead == ':') break;
+        if (!fallback_end) {
+          lexer->mark_end(lexer);
+          fallback_end = true;
+        }
       }
-      if (lexer->lookahead == quote) advance(lexer);
       continue;
     }
     advance(lexer);
   }
-  lexer->mark_end(lexer);
+  if (!(fallback_end && lexer->eof(lexer))) lexer->mark_end(lexer);
   lexer->result_symbol = kind;
   return true;
 }

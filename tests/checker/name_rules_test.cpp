@@ -219,6 +219,31 @@ TEST(NameRules, InstanceOfObsoleteFunctionBlockWarns) {
   EXPECT_EQ(all[0].message, "'fb1' is obsolete: datatype fb1 not valid!");
 }
 
+TEST(NameRules, AttributeValuesMayHoldApostrophesAndSpanLines) {
+  // A pytmc-style value over several lines with "we're" in it once swallowed the STRUCT after it.
+  const std::string text =
+      "TYPE ST_Axis :\n"                                       // 1
+      "STRUCT\n"                                               // 2
+      "  {attribute 'pytmc' := '\n"                            // 3
+      "    pv: AXIS\n"                                         // 4
+      "    field: DESC the axis we're moving\n"                // 5
+      "  '}\n"                                                 // 6
+      "  fPos : LREAL;\n"                                      // 7
+      "END_STRUCT\n"                                           // 8
+      "END_TYPE\n"                                             // 9
+      "{attribute 'obsolete' := 'use FB_New, it's faster'}\n"  // 10
+      "FUNCTION_BLOCK FB_Old\n"                                // 11
+      "END_FUNCTION_BLOCK\n"                                   // 12
+      "PROGRAM P\n"                                            // 13
+      "VAR st : ST_Axis; fb : FB_Old; END_VAR\n"               // 14
+      "st.fPos := 1.0;\n"                                      // 15
+      "END_PROGRAM\n";
+  const auto all = findings({{"P.st", text}}, Profile::Twincat);
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0].at, "E601@14?");
+  EXPECT_EQ(all[0].message, "'FB_Old' is obsolete: use FB_New, it's faster");
+}
+
 // --- CONSTANT globals through VAR_EXTERNAL (E401) -------------------------------------------------
 
 TEST(NameRules, ConstantGlobalCannotBeWrittenThroughExternal) {
