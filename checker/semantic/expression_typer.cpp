@@ -23,6 +23,20 @@ bool is_logical(std::string_view op) {
   return op == "AND" || op == "&" || op == "OR" || op == "XOR" || op == "AND_THEN" || op == "OR_ELSE";
 }
 
+// The operand of SIZEOF, XSIZEOF or __NEW, which may name a type instead of a value
+// (SIZEOF(BOOL), __NEW(INT)); `identifier` stands alone as the call's argument.
+bool is_type_operand(SyntaxNode identifier) {
+  SyntaxNode argument = identifier.parent();
+  if (!argument || argument.kind() != "argument" || argument.child_by_field("name")) return false;
+  SyntaxNode list = argument.parent();
+  SyntaxNode call = list ? list.parent() : SyntaxNode();
+  if (!call || call.kind() != "call_expression") return false;
+  SyntaxNode function = call.child_by_field("function");
+  if (!function || function.kind() != "identifier") return false;
+  const std::string_view name = function.text();
+  return names_equal(name, "SIZEOF") || names_equal(name, "XSIZEOF") || names_equal(name, "__NEW");
+}
+
 // A variable of a {attribute 'qualified_only'} list or a value of such an enum written without
 // its qualifier: the name exists, so "not declared" would send the user the wrong way.
 void report_qualified_only(BodyChecker& checker, const Symbol* hidden, SyntaxNode name, SourceId here) {
@@ -375,6 +389,9 @@ ExprInfo BodyChecker::type_identifier(SyntaxNode identifier) {
     report(codes::kUndeclaredName, fmt::format("there is no global variable '{}'", name), identifier.range(),
            fmt::format("'.{}' names a global only; write '{}' for a local or parameter", name, name));
     return ExprInfo{.type = types_.unknown(), .assignable = true};
+  }
+  if (const Type* type = types_.elementary(name); type && is_type_operand(identifier)) {
+    return ExprInfo{.type = type, .names_type = true};
   }
   if (!model_.has_unresolved_base(&pou_)) report_undeclared(identifier);
   return ExprInfo{.type = types_.unknown(), .assignable = true};

@@ -206,6 +206,25 @@ TEST(CallRules, LongerStringOutputBoundToAShorterVariableWarns) {
   EXPECT_EQ(found(text, Profile::Codesys), Found{"E106@6?"});
 }
 
+// --- SIZEOF, XSIZEOF and __NEW take type names ------------------------------------------------
+
+TEST(CallRules, SizeofTakesElementaryTypeNames) {
+  const std::string text =
+      "TYPE T_Data : STRUCT a : INT; END_STRUCT END_TYPE\n"                // 1
+      "PROGRAM Main\n"                                                     // 2
+      "VAR n : UDINT; p : POINTER TO INT; l : INT; END_VAR\n"              // 3
+      "n := SIZEOF(BOOL) + SIZEOF(lreal) + SIZEOF(T_Data) + SIZEOF(n);\n"  // 4
+      "n := XSIZEOF(DINT);\n"                                              // 5
+      "p := __NEW(INT);\n"                                                 // 6
+      "n := SIZEOF(T_Bogus);\n"                                            // 7
+      "n := UDINT;\n"                                                      // 8
+      "l := LEN(INT);\n"                                                   // 9
+      "END_PROGRAM\n";
+  for (Profile profile : {Profile::Codesys, Profile::Twincat}) {
+    EXPECT_EQ(found(text, profile), (Found{"E001@7", "E001@8", "E001@9"}));
+  }
+}
+
 // --- E305/E106: VAR_IN_OUT CONSTANT takes constants, expressions and strings of any length ------
 
 TEST(CallRules, InOutConstantTakesConstantsExpressionsAndLongerStrings) {
