@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "parser/source/utf8.hpp"
+
 namespace rung::check {
 namespace {
 
@@ -362,6 +364,16 @@ std::optional<std::string> parse_string_literal(std::string_view text, bool* wid
     }
   }
   return out;
+}
+
+size_t string_length(std::string_view value, bool wide) {
+  size_t length = 0;
+  for (size_t at = 0; at < value.size();) {
+    const source::Utf8Step step = source::decode_utf8_at(value, at);
+    length += wide && step.valid ? source::utf16_length(step.code_point) : 1;
+    at += step.length;
+  }
+  return length;
 }
 
 std::string string_escape_problem(std::string_view text) {

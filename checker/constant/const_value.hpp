@@ -55,6 +55,11 @@ std::string real_range_problem(double value, bool single);
 std::string point_in_time_literal_problem(std::string_view text);
 // '...' or "..." with $-escapes decoded; `wide` for double quotes.
 std::optional<std::string> parse_string_literal(std::string_view text, bool* wide = nullptr);
+// How many characters a decoded string value holds, as the PLC counts them: a STRING has one
+// byte per character in the target's code page, whatever encoding the source file had, so each
+// UTF-8 sequence is one character; a WSTRING counts UTF-16 units. A byte that starts no valid
+// sequence (a $E4 escape) is one character.
+size_t string_length(std::string_view value, bool wide);
 // The first '$' escape of a string literal that means nothing ('$Q'), as an error message; empty
 // when all are valid: $$ $' $" $L $N $P $R $T (either case) and $hh (OpenPCS S1022).
 std::string string_escape_problem(std::string_view text);

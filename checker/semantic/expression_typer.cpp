@@ -185,7 +185,7 @@ const Type* BodyChecker::literal_type(const ConstValue& value, bool based) const
     case ConstValue::Kind::Duration:
       return types_.elementary("TIME");
     case ConstValue::Kind::String:
-      return types_.string_type(false, static_cast<uint32_t>(std::max<size_t>(1, value.text.size())));
+      return types_.string_type(false, static_cast<uint32_t>(std::max<size_t>(1, string_length(value.text, false))));
     case ConstValue::Kind::Date:
       return types_.elementary("DATE");
   }
@@ -239,7 +239,7 @@ ExprInfo BodyChecker::type_literal(SyntaxNode literal) {
     auto text = parse_string_literal(literal.text(), &wide);
     if (text) {
       info.value = ConstValue{.kind = ConstValue::Kind::String, .text = *text};
-      info.type = types_.string_type(wide, static_cast<uint32_t>(std::max<size_t>(1, text->size())));
+      info.type = types_.string_type(wide, static_cast<uint32_t>(std::max<size_t>(1, string_length(*text, wide))));
     }
     info.untyped_literal = true;
     return info;

@@ -401,11 +401,12 @@ void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, Sy
       return;
     }
     if (constant.kind == ConstValue::Kind::String && is_string_like(to)) {
-      if (constant.text.size() > to->length) {
-        report(codes::kStringTooLong,
-               fmt::format("the string has {} characters; {} holds {}, the rest is cut off", constant.text.size(),
-                           to->name, to->length),
-               where.range(), fmt::format("declare STRING({}) or shorten the text", constant.text.size()));
+      const bool wide = to->kind == TypeKind::WString;
+      if (const size_t length = string_length(constant.text, wide); length > to->length) {
+        report(
+            codes::kStringTooLong,
+            fmt::format("the string has {} characters; {} holds {}, the rest is cut off", length, to->name, to->length),
+            where.range(), fmt::format("declare {}({}) or shorten the text", wide ? "WSTRING" : "STRING", length));
       }
       return;
     }

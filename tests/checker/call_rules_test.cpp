@@ -206,6 +206,36 @@ TEST(CallRules, LongerStringOutputBoundToAShorterVariableWarns) {
   EXPECT_EQ(found(text, Profile::Codesys), Found{"E106@6?"});
 }
 
+TEST(CallRules, StringLengthsCountCharactersNotBytes) {
+  // A STRING holds one byte per character in the target's code page, whatever the file's
+  // encoding; a WSTRING counts UTF-16 units.
+  const std::string utf8 =
+      "PROGRAM Main\n"
+      "VAR\n"
+      "  s5 : STRING(5) := '\xC3\xA4\xC3\xB6\xC3\xBC\xC3\x9F\xC3\xA9';\n"  // 3: 'äöüßé'
+      "  s4 : STRING(4) := '\xC3\xA4\xC3\xB6\xC3\xBC\xC3\x9F\xC3\xA9';\n"  // 4
+      "  w3 : WSTRING(3) := \"\xE2\x82\xAC\xF0\x9F\x98\x80\";\n"           // 5: "€😀", 3 units
+      "  w2 : WSTRING(2) := \"\xE2\x82\xAC\xF0\x9F\x98\x80\";\n"           // 6
+      "END_VAR\n"
+      "s5 := '\xC3\x84\xC3\x96\xC3\x9C$E4e';\n"  // 8: 'ÄÖÜ', a $E4 byte and e: 5 characters
+      "s4 := '\xC3\x84\xC3\x96\xC3\x9C$E4e';\n"  // 9
+      "END_PROGRAM\n";
+  EXPECT_EQ(found(utf8, Profile::Codesys), (Found{"E106@4?", "E106@6?", "E106@9?"}));
+  EXPECT_EQ(messages(utf8, Profile::Codesys, "E106"),
+            (std::vector<std::string>{"the string has 5 characters; STRING(4) holds 4, the rest is cut off",
+                                      "the string has 3 characters; WSTRING(2) holds 2, the rest is cut off",
+                                      "the string has 5 characters; STRING(4) holds 4, the rest is cut off"}));
+  // The same declarations in a cp1252 file.
+  const std::string cp1252 =
+      "PROGRAM Main\n"
+      "VAR\n"
+      "  s5 : STRING(5) := '\xE4\xF6\xFC\xDF\xE9';\n"
+      "  s4 : STRING(4) := '\xE4\xF6\xFC\xDF\xE9';\n"
+      "END_VAR\n"
+      "END_PROGRAM\n";
+  EXPECT_EQ(found(cp1252, Profile::Codesys), Found{"E106@4?"});
+}
+
 // --- SIZEOF, XSIZEOF and __NEW take type names ------------------------------------------------
 
 TEST(CallRules, SizeofTakesElementaryTypeNames) {
