@@ -18,10 +18,12 @@ bool is_word_char(char c) {
 // First words of the pragmas the CODESYS manuals describe besides attributes, messages, conditional
 // compilation and regions (which the grammar classifies itself): {include <file>} (002 L13094),
 // {bitaccess <constant> <bit> '<comment>'} in a STRUCT (002 L18181), the CODESYS V2.3 pragmas
-// {flag ...}, {parameter ...}, {library ...}, and {messageguid ...} of CODESYS exports. rung has
-// nothing to check for them, but they are not unknown either.
-constexpr std::array<std::string_view, 6> kOtherKnownPragmas = {"include",   "bitaccess", "flag",
-                                                                "parameter", "library",   "messageguid"};
+// {flag ...}, {parameter ...}, {library ...}, and {messageguid ...} of CODESYS exports. From the
+// CODESYS V3 and TwinCAT 3 online help: {noflow} and {flow} switch flow control off and on again
+// for the code between them, and {analysis -n} / {analysis +n} switch rule n of the static analysis
+// off and on. rung has nothing to check for them, but they are not unknown either.
+constexpr std::array<std::string_view, 9> kOtherKnownPragmas = {
+    "include", "bitaccess", "flag", "parameter", "library", "messageguid", "flow", "noflow", "analysis"};
 // What a misspelled pragma word is compared with for "did you mean".
 constexpr std::array<std::string_view, 12> kSuggestedWords = {"attribute", "warning", "error",     "info",
                                                               "text",      "define",  "undefine",  "region",
@@ -47,6 +49,16 @@ std::string message_text(std::string_view content, std::string_view word) {
   if (begin == std::string_view::npos) return {};
   const size_t end = rest.find_last_not_of(" \t\r\n");
   return std::string(rest.substr(begin, end - begin + 1));
+}
+
+// {warning disable C0371} and {warning restore C0371} (CODESYS V3, TwinCAT 3): they turn a
+// compiler warning off and back on for the code between them; they are no message. `rest` is the
+// pragma after its word "warning".
+bool is_warning_switch(std::string_view rest) {
+  const size_t begin = rest.find_first_not_of(" \t\r\n");
+  if (begin == std::string_view::npos) return false;
+  const std::string_view action = first_word(rest.substr(begin));
+  return names_equal(action, "disable") || names_equal(action, "restore");
 }
 
 class PragmaChecker {
@@ -82,6 +94,7 @@ class PragmaChecker {
 
   void message(SyntaxNode pragma, std::string_view content) {
     const std::string_view word = first_word(content);
+    if (names_equal(word, "warning") && is_warning_switch(content.substr(word.size()))) return;
     std::string text = message_text(content, word);
     if (names_equal(word, "warning")) {
       out_.push_back(make_diagnostic(codes::kPragmaWarning, text.empty() ? "{warning} pragma" : std::move(text),
@@ -116,8 +129,9 @@ class PragmaChecker {
     std::string shown(pragma.text().substr(0, 60));
     if (pragma.text().size() > 60) shown += "...";
     std::string help =
-        "rung reads {attribute ...}, {warning/error/info/text '...'}, {IF}/{ELSIF}/{ELSE}/{END_IF}, "
-        "{define}/{undefine} and {region}; like CODESYS it ignores other pragmas";
+        "rung reads {attribute ...}, {warning/error/info/text '...'}, {warning disable/restore ...}, "
+        "{IF}/{ELSIF}/{ELSE}/{END_IF}, {define}/{undefine}, {region}, {flow}/{noflow} and {analysis ...}; "
+        "like CODESYS it ignores other pragmas";
     if (!word.empty()) {
       const std::string_view close = closest_name(word, kSuggestedWords);
       if (!close.empty()) help = fmt::format("did you mean {{{} ...}}?", close);

@@ -89,6 +89,14 @@ TEST(PragmaCheck, UserAttributesAndKnownPragmasAreSilent) {
       Codes{});
 }
 
+TEST(PragmaCheck, VendorPragmasForWarningsFlowControlAndAnalysisAreSilent) {
+  // CODESYS V3 / TwinCAT 3: {warning disable|restore <id>}, {noflow}/{flow}, {analysis -n|+n}.
+  EXPECT_EQ(codes_at(check("PROGRAM P\nVAR n : INT; END_VAR\n{warning disable C0371}\n{ WARNING Restore C0371 }\n"
+                           "{noflow}\nn := n + 1;\n{flow}\n{analysis -33}\n{analysis +33}\n"
+                           "{warning 'disable this'}\n{warning}\nEND_PROGRAM\n")),
+            (Codes{"E602@10", "E602@11"}));
+}
+
 TEST(PragmaCheck, UnknownPragmaIsAWarningWithASuggestion) {
   const auto findings =
       check("PROGRAM P\nVAR\n  {atribute 'hide'}\n  n : INT;\nEND_VAR\n{frobnicate 1}\nn := 1;\nEND_PROGRAM\n");
