@@ -28,7 +28,9 @@ std::vector<fs::path> default_library_folders(project::Profile profile) {
   const fs::path root = standard_library_dir();
   std::vector<fs::path> folders{root / "iec"};
   if (profile == project::Profile::Codesys || profile == project::Profile::Twincat) {
-    for (const char* name : {"Operators", "Standard", "Standard64", "Util"}) folders.push_back(root / "codesys" / name);
+    for (const char* name : {"Operators", "Standard", "Standard64", "Util", "__SYSTEM"}) {
+      folders.push_back(root / "codesys" / name);
+    }
   }
   if (profile == project::Profile::Openpcs) folders.push_back(root / "openpcs" / "System");
   return folders;

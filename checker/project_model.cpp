@@ -210,6 +210,8 @@ void ProjectModel::index_source(Source& source, bool report_duplicates) {
   for (Symbol* symbol : source.symbols.top_level) {
     if (symbol->name.empty()) continue;
     if (source.library) libraries_[source.library_name].emplace(symbol->name, symbol);
+    // A compiler namespace (__SYSTEM) is reached only through its prefix: __SYSTEM.TYPE_CLASS.
+    if (source.library && source.library_name.starts_with("__")) continue;
     if (symbol->kind == SymbolKind::Configuration) continue;
     auto [it, inserted] = globals_.emplace(symbol->name, symbol);
     if (!inserted && it->second != symbol) {

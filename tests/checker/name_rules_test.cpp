@@ -164,6 +164,29 @@ TEST(NameRules, ImplicitEnumerationValuesAreNamesOfTheirPou) {
   EXPECT_EQ(found(text), (Found{"E001@20", "E001@20"}));
 }
 
+TEST(NameRules, SystemNamespaceOfTheCompilers) {
+  // CODESYS V3 and TwinCAT 3 provide __SYSTEM.IQueryInterface, __SYSTEM.TYPE_CLASS,
+  // __SYSTEM.AnyType and __SYSTEM.ExceptionCode without a library; only with the prefix.
+  const std::string text =
+      "INTERFACE I_Drive EXTENDS __SYSTEM.IQueryInterface\n"               // 1
+      "END_INTERFACE\n"                                                    // 2
+      "FUNCTION F_Kind : BOOL\n"                                           // 3
+      "VAR\n"                                                              // 4
+      "  eClass : __SYSTEM.TYPE_CLASS := __SYSTEM.TYPE_CLASS.TYPE_INT;\n"  // 5
+      "  stAny : __SYSTEM.AnyType;\n"                                      // 6
+      "  exc : __SYSTEM.ExceptionCode;\n"                                  // 7
+      "END_VAR\n"                                                          // 8
+      "eClass := stAny.TypeClass;\n"                                       // 9
+      "F_Kind := eClass = __SYSTEM.TYPE_CLASS.TYPE_LREAL;\n"               // 10
+      "exc := __SYSTEM.ExceptionCode.RTSEXCPT_ARRAYBOUNDS;\n"              // 11
+      "eClass := __SYSTEM.TYPE_CLASS.TYPE_NOPE;\n"                         // 12
+      "eClass := TYPE_INT;\n"                                              // 13
+      "END_FUNCTION\n";
+  for (Profile profile : {Profile::Codesys, Profile::Twincat}) {
+    EXPECT_EQ(found(text, profile), (Found{"E005@12", "E001@13"}));
+  }
+}
+
 // --- global scope operator `.x` -------------------------------------------------------------------
 
 TEST(NameRules, LeadingDotNamesTheGlobalEvenWhenALocalHidesIt) {
