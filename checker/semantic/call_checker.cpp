@@ -11,6 +11,11 @@
 namespace rung::check {
 namespace {
 
+std::string convert_help(const Type* from, const Type* to) {
+  const std::string function = conversion_function(from, to);
+  return function.empty() ? std::string() : fmt::format("convert explicitly, e.g. {}()", function);
+}
+
 struct Parameter {
   const Symbol* symbol;
   ast::VarSection section;
@@ -403,7 +408,7 @@ void BodyChecker::check_one_generic_type(const Symbol* callee, const std::vector
     report(
         codes::kTypeMismatch,
         fmt::format("{} takes arguments of one type: {} and {} differ", callee->name, typed->name, argument.type->name),
-        where[i].range(), fmt::format("convert explicitly, e.g. {}_TO_{}()", argument.type->name, typed->name));
+        where[i].range(), convert_help(argument.type, typed));
     return;
   }
 }

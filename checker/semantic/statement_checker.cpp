@@ -351,7 +351,7 @@ void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, Sy
       if (base->kind == TypeKind::Bool) {
         if (profile.bit_literals_to_bool && (constant.integer == 0 || constant.integer == 1)) return;
         report(codes::kTypeMismatch,
-               fmt::format("Cannot convert type '{}' to type '{}'", value.type->name, target->name), where.range(),
+               fmt::format("cannot convert type '{}' to type '{}'", value.type->name, target->name), where.range(),
                fmt::format("BOOL takes TRUE or FALSE; to turn a number into BOOL write {}_TO_BOOL(x) or x <> 0",
                            value.type->name));
         return;
@@ -360,7 +360,7 @@ void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, Sy
         const Type* subrange = underlying(target);
         if (constant.integer < subrange->range_lower || constant.integer > subrange->range_upper) {
           report(codes::kLiteralOutOfRange,
-                 fmt::format("Cannot convert '{}' to type '{}': outside {}..{}", int128_to_string(constant.integer),
+                 fmt::format("cannot convert '{}' to type '{}': outside {}..{}", int128_to_string(constant.integer),
                              subrange->name, subrange->range_lower, subrange->range_upper),
                  where.range());
         }
@@ -384,12 +384,13 @@ void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, Sy
     }
     if (constant.kind == ConstValue::Kind::Real && is_numeric(base) && base->kind != TypeKind::Real) {
       if (profile.narrowing_is_error) {
-        report(codes::kTypeMismatch, fmt::format("Cannot convert type 'REAL' to type '{}'", target->name), where.range(),
-               fmt::format("use REAL_TO_{}()", target->name));
+        report(codes::kTypeMismatch, fmt::format("cannot convert type 'REAL' to type '{}'", target->name),
+               where.range(), fmt::format("use {}()", conversion_function(types_.elementary("REAL"), target)));
       } else {
         report(codes::kImplicitNarrowing,
-               fmt::format("implicit conversion of a REAL constant to {} loses the fraction", target->name), where.range(),
-               fmt::format("use REAL_TO_{}() or TRUNC()", target->name));
+               fmt::format("implicit conversion of a REAL constant to {} loses the fraction", target->name),
+               where.range(),
+               fmt::format("use {}() or TRUNC()", conversion_function(types_.elementary("REAL"), target)));
       }
       return;
     }
@@ -417,23 +418,24 @@ void BodyChecker::check_conversion(const ExprInfo& value, const Type* target, Sy
     case Convertibility::Implicit:
       check_string_length(*this, value, to, where);
       return;
-    case Convertibility::Narrowing:
+    case Convertibility::Narrowing: {
+      const std::string function = conversion_function(value.type, target);
+      std::string help = function.empty() ? std::string() : fmt::format("use an explicit conversion: {}()", function);
       if (profile.narrowing_is_error) {
-        report(codes::kTypeMismatch, fmt::format("Cannot convert type '{}' to type '{}'", value.type->name, target->name),
-               where.range(), fmt::format("use an explicit conversion: {}_TO_{}()", value.type->name, target->name));
+        report(codes::kTypeMismatch,
+               fmt::format("cannot convert type '{}' to type '{}'", value.type->name, target->name), where.range(),
+               std::move(help));
       } else {
         report(codes::kImplicitNarrowing,
                fmt::format("implicit conversion from {} to {} may lose data", value.type->name, target->name),
-               where.range(), fmt::format("use an explicit conversion: {}_TO_{}()", value.type->name, target->name));
+               where.range(), std::move(help));
       }
       return;
+    }
     case Convertibility::Never: {
-      std::string help;
-      if (is_elementary(value.type) && is_elementary(target)) {
-        help = fmt::format("use {}_TO_{}(x)", arithmetic_type(value.type)->name, arithmetic_type(target)->name);
-      }
-      report(codes::kTypeMismatch, fmt::format("Cannot convert type '{}' to type '{}'", value.type->name, target->name),
-             where.range(), std::move(help));
+      const std::string function = conversion_function(value.type, target);
+      report(codes::kTypeMismatch, fmt::format("cannot convert type '{}' to type '{}'", value.type->name, target->name),
+             where.range(), function.empty() ? std::string() : fmt::format("use {}(x)", function));
       return;
     }
   }

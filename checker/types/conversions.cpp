@@ -1,9 +1,22 @@
 #include "checker/types/conversions.hpp"
 
+#include <fmt/format.h>
+
+#include "checker/symbols/names.hpp"
 #include "checker/symbols/symbol.hpp"
 
 namespace rung::check {
 namespace {
+
+// The name conversion functions use for a type: STRING for STRING(43), the elementary type behind
+// an alias, subrange or enum; empty for other types.
+std::string_view conversion_name(const Type* type) {
+  const Type* base = arithmetic_type(type);
+  if (!base || !is_elementary(base)) return {};
+  if (base->kind == TypeKind::String) return "STRING";
+  if (base->kind == TypeKind::WString) return "WSTRING";
+  return base->name;
+}
 
 bool fits_range(const Type* from, const Type* to) {
   auto a = integer_range(from);
@@ -24,6 +37,17 @@ Convertibility numeric(const Type* from, const Type* to, const Profile& profile)
 }
 
 }  // namespace
+
+std::string conversion_function(const Type* from, const Type* to) {
+  // No conversion function makes an enum value.
+  const std::string_view target = to && underlying(to)->kind != TypeKind::Enum ? conversion_name(to) : "";
+  if (target.empty() || !from) return {};
+  // An enumeration converts with the overloaded TO_<type>.
+  if (underlying(from)->kind == TypeKind::Enum) return fmt::format("TO_{}", target);
+  const std::string_view source = conversion_name(from);
+  if (source.empty() || names_equal(source, target)) return {};
+  return fmt::format("{}_TO_{}", source, target);
+}
 
 bool derives_from(const Type* type, const Type* base) {
   if (!type || !base || !type->declaration || !base->declaration) return false;

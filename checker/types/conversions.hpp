@@ -2,6 +2,7 @@
 // result types of operators. One table for the checker (and later the runner's lowering).
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "checker/profile.hpp"
@@ -17,6 +18,11 @@ enum class Convertibility {
 };
 
 Convertibility convertibility(const Type* from, const Type* to, const Profile& profile);
+
+// The standard function that converts a `from` value into `to`, for help lines: INT_TO_REAL,
+// STRING_TO_UINT for a STRING(43), TO_INT for an enum value. Empty when there is none (the same
+// elementary type on both sides, or a type that is not elementary).
+std::string conversion_function(const Type* from, const Type* to);
 
 // Whether `type` is `base` or (transitively) extends / implements it.
 bool derives_from(const Type* type, const Type* base);

@@ -44,7 +44,29 @@ TEST(Check, IntegerLiteralIntoBoolIsC0032) {
   ASSERT_EQ(results.size(), 1u);
   ASSERT_EQ(results[0].diagnostics.size(), 1u);
   EXPECT_EQ(results[0].diagnostics[0].code, "E101");
-  EXPECT_EQ(results[0].diagnostics[0].message, "Cannot convert type 'USINT' to type 'BOOL'");
+  EXPECT_EQ(results[0].diagnostics[0].message, "cannot convert type 'USINT' to type 'BOOL'");
+}
+
+TEST(Check, ConversionHelpNamesAFunctionThatExists) {
+  // The help names the standard conversion: STRING_TO_UINT for a STRING(43), TO_INT for an enum
+  // value; none where no function converts (into an enum).
+  project::ProjectConfig config;
+  config.profile = project::Profile::Twincat;
+  auto workspace =
+      Workspace::from_texts({{"P.st",
+                              "{attribute 'strict'}\nTYPE E_Mode : (AUTO, MANUAL); END_TYPE\n"
+                              "PROGRAM P\nVAR s : STRING(43); u : UINT; e : E_Mode; i : INT; r : REAL; END_VAR\n"
+                              "u := s;\ni := e;\ne := i;\ni := r;\nEND_PROGRAM\n"}},
+                            config);
+  auto results = workspace->check_all(1);
+  ASSERT_EQ(results.size(), 1u);
+  std::vector<std::string> found;
+  for (const auto& d : results[0].diagnostics) found.push_back(d.code + ": " + d.message + " | " + d.help);
+  EXPECT_EQ(found, (Codes{"E101: cannot convert type 'STRING(43)' to type 'UINT' | use STRING_TO_UINT(x)",
+                          "E101: cannot convert type 'E_Mode' to type 'INT' | use TO_INT(x)",
+                          "E101: cannot convert type 'INT' to type 'E_Mode' | ",
+                          "E105: implicit conversion from REAL to INT may lose data | "
+                          "use an explicit conversion: REAL_TO_INT()"}));
 }
 
 TEST(Check, SubrangeConstantOutOfRange) {
