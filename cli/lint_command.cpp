@@ -101,6 +101,7 @@ class LintCommand {
       run.baselined = matched.matched;
       run.stale = matched.unmatched;
     }
+    add_unreadable_input(run.files);
     return finish(run, /*report=*/true);
   }
 
@@ -117,6 +118,24 @@ class LintCommand {
       if (!model.source(id).library && project_.in_scope(model.source(id).document->path())) ids.push_back(id);
     }
     return lint::lint_sources(*project_.workspace, ids, settings(), options_.threads);
+  }
+
+  // A file rung could not read (binary, malformed XML, too large, an I/O error) was not linted:
+  // like `rung check`, report why as an error in front of its findings. Never baselined.
+  void add_unreadable_input(std::vector<lint::FileFindings>& files) const {
+    for (lint::FileFindings& file : files) {
+      std::vector<lint::Finding> unreadable;
+      for (const Diagnostic& diagnostic : document_of(file).diagnostics()) {
+        const std::string_view code = diagnostic.code;
+        if (code == codes::kBinaryFile || code == codes::kContainer || code == codes::kParseAborted ||
+            code == codes::kIoError) {
+          unreadable.push_back({diagnostic, std::nullopt});
+          unreadable.back().diagnostic.severity = Severity::Error;
+        }
+      }
+      file.findings.insert(file.findings.begin(), std::make_move_iterator(unreadable.begin()),
+                           std::make_move_iterator(unreadable.end()));
+    }
   }
 
   bool read_baseline() {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/check_command.hpp"
+#include "cli/command_name.hpp"
 #include "cli/explain_command.hpp"
 #include "cli/fmt_command.hpp"
 #include "cli/init_command.hpp"
@@ -139,6 +140,7 @@ int run(int argc, char** argv) {
   CLI::App* help = app.add_subcommand("help", "Show help for rung or for one command");
   help->add_option("command", help_topic, "The command to explain");
 
+  if (const auto refused = rung::cli::reject_unknown_command(app, argc, argv, stderr)) return *refused;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -158,7 +160,7 @@ int run(int argc, char** argv) {
       try {
         sub = app.get_subcommand(help_topic);
       } catch (const CLI::OptionNotFound&) {
-        std::fprintf(stderr, "error: no command '%s'; run 'rung help' for the list\n", help_topic.c_str());
+        std::fprintf(stderr, "error: %s\n", rung::cli::unknown_command_message(app, help_topic).c_str());
         return 2;
       }
       std::fputs(sub->get_formatter()->make_help(sub, "rung " + sub->get_name(), CLI::AppFormatMode::Normal).c_str(),

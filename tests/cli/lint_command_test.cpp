@@ -210,6 +210,28 @@ TEST_F(LintCommand, SuppressionCommentsHideFindings) {
   EXPECT_EQ(check.out.find("E604"), std::string::npos) << check.out;
 }
 
+TEST_F(LintCommand, UnreadableInputIsAnErrorAsInCheck) {
+  write("rung.toml", config());
+  write("Main.st", kProgram);
+  write("Blob.st", std::string("\x7F"
+                               "ELF\x02\x01\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+                               16));
+  write("FB_Broken.TcPOU",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n"
+        "  <POU Name=\"FB_Broken\">\n    <Declaration><![CDATA[FUNCTION_BLOCK FB_Broken]]></Declaration>\n"
+        "</TcPlcObject>\n");
+  const LintRun run = lint("");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.out.find("Blob.st:1:1: error[S009]: binary file, not PLC source text"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("FB_Broken.TcPOU:"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(": error[S010]: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("warning[L035]"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("2 errors, 1 warning in 3 files"), std::string::npos) << run.err;
+  // An unreadable file is never written to the baseline: it stays an error.
+  EXPECT_EQ(lint("--write-baseline").exit_code, 0);
+  EXPECT_EQ(lint("").exit_code, 1);
+}
+
 TEST_F(LintCommand, ListRulesShowsEveryRuleAndTheProjectSetting) {
   write("rung.toml", "[lint.rules]\nself-assignment = \"error\"\ntodo-comment = \"on\"\n");
   const LintRun run = lint("--list-rules");

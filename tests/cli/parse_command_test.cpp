@@ -91,6 +91,22 @@ TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_NE(missing.err.find("no/such/dir"), std::string::npos);
 }
 
+TEST(Cli, UnknownCommandIsAnErrorWithASuggestion) {
+  // As cargo does: a CI script that calls a command that does not exist must fail.
+  RunResult typo = run_rung("chekc examples");
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_EQ(typo.out, "");
+  EXPECT_EQ(typo.err, "error: no command 'chekc'; did you mean 'check'?\n");
+  RunResult far = run_rung("sevre");
+  EXPECT_EQ(far.exit_code, 2);
+  EXPECT_EQ(far.out, "");
+  EXPECT_EQ(far.err, "error: no command 'sevre'; run 'rung help' for the list of commands\n");
+  RunResult help = run_rung("help lnt");
+  EXPECT_EQ(help.exit_code, 2);
+  EXPECT_EQ(help.err, "error: no command 'lnt'; did you mean 'lint'?\n");
+  EXPECT_EQ(run_rung("").exit_code, 0);  // no command: the overview
+}
+
 TEST(Cli, CleanProjectExitsZero) {
   RunResult r = run_rung("parse examples/conveyor");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
