@@ -6,13 +6,17 @@
 
 #include "cli/check_command.hpp"
 #include "cli/command_name.hpp"
+#include "cli/diff_command.hpp"
 #include "cli/explain_command.hpp"
 #include "cli/fmt_command.hpp"
+#include "cli/git_command.hpp"
 #include "cli/init_command.hpp"
 #include "cli/lint_command.hpp"
 #include "cli/lsp_command.hpp"
+#include "cli/merge_file_command.hpp"
 #include "cli/parse_command.hpp"
 #include "cli/run_command.hpp"
+#include "cli/textconv_command.hpp"
 
 namespace {
 
@@ -136,10 +140,42 @@ int run(int argc, char** argv) {
   lsp->add_flag("--stdio", lsp_stdio, "Use standard input/output (the default; accepted for clients that pass it)");
   lsp->add_option("-j,--jobs", lsp_options.threads, "Threads for indexing (default: one per core)");
 
+  std::string textconv_path;
+  CLI::App* textconv = app.add_subcommand(
+      "textconv", "Print the ST text of a PLC source file (vendor containers without their XML), for git");
+  textconv->add_option("file", textconv_path, "The file")->required();
+
+  rung::cli::DiffCommandOptions diff_options;
+  CLI::App* diff = app.add_subcommand(
+      "diff", "Show what changed in the PLC code of a git repository, by meaning (objects, declarations, bodies)");
+  diff->add_option("args", diff_options.arguments, "[REV [REV]] [-- PATH...], as git diff takes them");
+  diff->add_flag("--cached,--staged", diff_options.cached, "Compare the index with HEAD (or with REV)");
+  diff->add_option("--format", diff_options.format, "Output format")->check(CLI::IsMember({"human", "json"}));
+  diff->add_flag("--stat", diff_options.stat, "One line per changed object");
+  diff->add_flag("--exit-code", diff_options.exit_code, "Exit with 1 when something changed, 0 otherwise");
+  diff->add_flag("--comments", diff_options.comments, "Report comment-only changes too");
+  diff->add_option("--color", color_text, "When to use colours")->check(CLI::IsMember({"auto", "always", "never"}));
+
+  bool git_global = false;
+  CLI::App* git = app.add_subcommand("git", "Set git up for PLC sources (textconv and merge drivers)");
+  git->require_subcommand(1);
+  CLI::App* git_setup =
+      git->add_subcommand("setup", "Write the .gitattributes lines and git config for rung's diff and merge drivers");
+  git_setup->add_flag("--global", git_global, "For every repository of the user (~/.gitconfig)");
+
+  rung::cli::MergeFileOptions merge_file_options;
+  CLI::App* merge_file = app.add_subcommand(
+      "merge-file", "Three-way merge of a PLC source on its syntax tree; git's merge driver (%O %A %B %P)");
+  merge_file->add_option("base", merge_file_options.base, "The common ancestor (%O)")->required();
+  merge_file->add_option("ours", merge_file_options.ours, "Our version, replaced by the result (%A)")->required();
+  merge_file->add_option("theirs", merge_file_options.theirs, "Their version (%B)")->required();
+  merge_file->add_option("path", merge_file_options.path, "The file's path in the repository (%P)");
+
   std::string help_topic;
   CLI::App* help = app.add_subcommand("help", "Show help for rung or for one command");
   help->add_option("command", help_topic, "The command to explain");
 
+  argc = rung::cli::take_arguments_after_dashes(argc, argv, "diff", &diff_options.paths);
   if (const auto refused = rung::cli::reject_unknown_command(app, argc, argv, stderr)) return *refused;
   try {
     app.parse(argc, argv);
@@ -179,6 +215,13 @@ int run(int argc, char** argv) {
     if (port_option->count() > 0) lsp_options.port = lsp_port;
     return rung::cli::run_lsp_command(lsp_options);
   }
+  if (*textconv) return rung::cli::run_textconv_command(textconv_path, stdout, stderr);
+  if (*diff) {
+    diff_options.color = color;
+    return rung::cli::run_diff_command(diff_options, stdout, stderr);
+  }
+  if (*git) return rung::cli::run_git_setup_command(git_global, stdout, stderr);
+  if (*merge_file) return rung::cli::run_merge_file_command(merge_file_options, stdout, stderr);
   if (*init) return rung::cli::run_init_command(init_dir, init_force, stdout, stderr);
   if (*explain) return rung::cli::run_explain_command(explain_code, stdout, stderr);
   if (*fmt_command) {

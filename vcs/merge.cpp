@@ -1,0 +1,684 @@
+#include "vcs/merge.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <optional>
+#include <pugixml.hpp>
+#include <sstream>
+#include <utility>
+
+#include "formatter/unified_diff.hpp"
+#include "parser/ast.hpp"
+#include "parser/containers/read_container.hpp"
+#include "parser/keywords.hpp"
+#include "parser/source/decode.hpp"
+#include "parser/source/encode.hpp"
+#include "parser/syntax_tree.hpp"
+
+namespace rung::vcs {
+namespace {
+
+using Lines = std::vector<std::string_view>;
+
+void ensure_line_end(std::string& out, std::string_view eol) {
+  if (!out.empty() && out.back() != '\n') out += eol;
+}
+
+// The line end a text uses ("\r\n" when its first line ends so).
+std::string_view line_end_of(std::string_view text) {
+  const size_t nl = text.find('\n');
+  return nl != std::string_view::npos && nl > 0 && text[nl - 1] == '\r' ? "\r\n" : "\n";
+}
+
+// One side's replacement of base lines [begin, end).
+struct SideChange {
+  size_t begin = 0;
+  size_t end = 0;
+  Lines lines;
+  int side = 0;  // 0 ours, 1 theirs
+};
+
+void append_lines(std::string& out, const Lines& lines, size_t begin, size_t end) {
+  for (size_t i = begin; i < end && i < lines.size(); ++i) out += lines[i];
+}
+
+// The text of base lines [begin, end) with one side's changes in that range applied.
+std::string apply_side(const Lines& base, const std::vector<SideChange>& changes, size_t first, size_t last, int side,
+                       size_t begin, size_t end) {
+  std::string out;
+  size_t at = begin;
+  for (size_t i = first; i < last; ++i) {
+    const SideChange& c = changes[i];
+    if (c.side != side) continue;
+    append_lines(out, base, at, c.begin);
+    for (const std::string_view line : c.lines) out += line;
+    at = c.end;
+  }
+  append_lines(out, base, at, end);
+  return out;
+}
+
+void append_conflict(std::string& out, std::string_view ours, std::string_view theirs, const MergeLabels& labels,
+                     std::string_view eol) {
+  ensure_line_end(out, eol);
+  out += fmt::format("<<<<<<< {}{}", labels.ours, eol);
+  out += ours;
+  ensure_line_end(out, eol);
+  out += fmt::format("======={}", eol);
+  out += theirs;
+  ensure_line_end(out, eol);
+  out += fmt::format(">>>>>>> {}{}", labels.theirs, eol);
+}
+
+// Keys of units in three versions, aligned: our order, with their additions after the unit
+// that precedes them on their side.
+struct Slot {
+  int base = -1;
+  int ours = -1;
+  int theirs = -1;
+};
+
+std::vector<Slot> align(const std::vector<std::string>& base, const std::vector<std::string>& ours,
+                        const std::vector<std::string>& theirs) {
+  const auto index = [](const std::vector<std::string>& keys) {
+    std::map<std::string, int> m;
+    for (size_t i = 0; i < keys.size(); ++i) m.emplace(keys[i], static_cast<int>(i));
+    return m;
+  };
+  const std::map<std::string, int> b = index(base);
+  const std::map<std::string, int> t = index(theirs);
+  const auto find = [](const std::map<std::string, int>& m, const std::string& key) {
+    const auto it = m.find(key);
+    return it == m.end() ? -1 : it->second;
+  };
+  std::vector<Slot> slots;
+  std::vector<std::string> keys;
+  for (size_t i = 0; i < ours.size(); ++i) {
+    slots.push_back({find(b, ours[i]), static_cast<int>(i), find(t, ours[i])});
+    keys.push_back(ours[i]);
+  }
+  for (size_t i = 0; i < theirs.size(); ++i) {
+    if (std::find(keys.begin(), keys.end(), theirs[i]) != keys.end()) continue;
+    size_t at = 0;
+    for (size_t p = i; p-- > 0;) {
+      const auto it = std::find(keys.begin(), keys.end(), theirs[p]);
+      if (it != keys.end()) {
+        at = static_cast<size_t>(it - keys.begin()) + 1;
+        break;
+      }
+    }
+    // After what we added there too: ours first.
+    while (at < slots.size() && slots[at].base < 0 && slots[at].theirs < 0) ++at;
+    slots.insert(slots.begin() + static_cast<std::ptrdiff_t>(at), Slot{find(b, theirs[i]), -1, static_cast<int>(i)});
+    keys.insert(keys.begin() + static_cast<std::ptrdiff_t>(at), theirs[i]);
+  }
+  return slots;
+}
+
+bool has_duplicates(std::vector<std::string> keys) {
+  std::sort(keys.begin(), keys.end());
+  return std::adjacent_find(keys.begin(), keys.end()) != keys.end();
+}
+
+// ---- plain ST: top-level objects ----
+
+struct Unit {
+  std::string key;
+  std::string text;
+};
+
+std::vector<std::string> unit_keys(const std::vector<Unit>& units) {
+  std::vector<std::string> keys;
+  keys.reserve(units.size());
+  for (const Unit& u : units) keys.push_back(u.key);
+  return keys;
+}
+
+void add_member_keys(const ast::Pou& pou, const std::string& prefix, SyntaxNode root,
+                     std::map<uint32_t, std::string>& keys) {
+  for (const ast::Pou& member : pou.members()) {
+    std::string name(member.name());
+    if (name.empty()) name = keywords::upper(member.node().child(0).text());
+    const std::string key = prefix + "." + keywords::upper(name);
+    if (member.node().parent() == root) keys.emplace(member.node().begin(), "member:" + key);
+    add_member_keys(member, key, root, keys);
+  }
+}
+
+std::optional<std::vector<Unit>> st_units(std::string_view text) {
+  const SyntaxTree tree = SyntaxTree::parse(std::string(text));
+  if (tree.aborted() || tree.root().has_error()) return std::nullopt;
+  const SyntaxNode root = tree.root();
+  const ast::Outline outline = ast::outline(root);
+  std::map<uint32_t, std::string> keys;
+  for (const ast::Pou& pou : outline.pous) {
+    keys.emplace(pou.node().begin(), "pou:" + keywords::upper(pou.name()));
+    add_member_keys(pou, keywords::upper(pou.name()), root, keys);
+  }
+  for (const ast::TypeDeclaration& type : outline.types) {
+    SyntaxNode top = type.node();
+    while (top.parent() && top.parent() != root) top = top.parent();
+    keys.emplace(top.begin(), "type:" + keywords::upper(type.name()));
+  }
+  for (const ast::VarBlock& block : outline.global_blocks) {
+    const std::vector<ast::VarDeclaration> declarations = block.declarations();
+    std::string first = declarations.empty() || declarations.front().names().empty()
+                            ? std::string()
+                            : keywords::upper(declarations.front().names().front().text());
+    keys.emplace(block.node().begin(), "gvl:" + first);
+  }
+  for (const SyntaxNode& configuration : outline.configurations) {
+    keys.emplace(configuration.begin(),
+                 "configuration:" + keywords::upper(configuration.child_by_field("name").text()));
+  }
+  std::vector<Unit> units;
+  uint32_t at = 0;
+  bool unknown = false;
+  root.for_each_child([&](SyntaxNode child) {
+    if (unknown || child.is_extra()) return;
+    const auto it = keys.find(child.begin());
+    if (it == keys.end()) {
+      unknown = true;
+      return;
+    }
+    // The unit runs to the end of its last line.
+    size_t end = child.end();
+    const size_t nl = text.find('\n', end);
+    if (nl != std::string_view::npos &&
+        text.substr(end, nl - end).find_first_not_of(" \t\r") == std::string_view::npos) {
+      end = nl + 1;
+    }
+    units.push_back({it->second, std::string(text.substr(at, end - at))});
+    at = static_cast<uint32_t>(end);
+  });
+  if (unknown) return std::nullopt;
+  units.push_back({"\x01tail", std::string(text.substr(at))});
+  return units;
+}
+
+// Merges units by key (see align); a unit changed on one side and deleted on the other is a
+// conflict written with markers.
+MergeResult merge_units(const std::vector<Unit>& base, const std::vector<Unit>& ours, const std::vector<Unit>& theirs,
+                        const MergeLabels& labels) {
+  MergeResult result;
+  for (const Slot& slot : align(unit_keys(base), unit_keys(ours), unit_keys(theirs))) {
+    const Unit* b = slot.base >= 0 ? &base[static_cast<size_t>(slot.base)] : nullptr;
+    const Unit* o = slot.ours >= 0 ? &ours[static_cast<size_t>(slot.ours)] : nullptr;
+    const Unit* t = slot.theirs >= 0 ? &theirs[static_cast<size_t>(slot.theirs)] : nullptr;
+    if (o != nullptr && t != nullptr) {
+      MergeResult part = merge_lines(b != nullptr ? b->text : std::string(), o->text, t->text, labels);
+      result.text += part.text;
+      result.conflicts += part.conflicts;
+    } else if (o != nullptr) {
+      if (b == nullptr) {
+        result.text += o->text;  // we added it
+      } else if (b->text != o->text) {
+        append_conflict(result.text, o->text, {}, labels, line_end_of(o->text));
+        ++result.conflicts;
+        result.notes.push_back(
+            fmt::format("{}: changed on our side, deleted on theirs", o->key.substr(o->key.find(':') + 1)));
+      }
+    } else if (t != nullptr) {
+      if (b == nullptr) {
+        result.text += t->text;  // they added it
+      } else if (b->text != t->text) {
+        append_conflict(result.text, {}, t->text, labels, line_end_of(t->text));
+        ++result.conflicts;
+        result.notes.push_back(
+            fmt::format("{}: deleted on our side, changed on theirs", t->key.substr(t->key.find(':') + 1)));
+      }
+    }
+  }
+  return result;
+}
+
+// ---- XML (TwinCAT, PLCopen): the element tree ----
+
+bool is_text_element(pugi::xml_node node) {
+  return !node.first_child() || !node.find_child([](pugi::xml_node c) { return c.type() == pugi::node_element; });
+}
+
+std::string text_of(pugi::xml_node node) {
+  std::string out;
+  if (!node) return out;
+  for (const pugi::xml_node c : node.children()) {
+    if (c.type() == pugi::node_cdata || c.type() == pugi::node_pcdata) out += c.value();
+  }
+  return out;
+}
+
+bool uses_cdata(pugi::xml_node node) {
+  return static_cast<bool>(node.find_child([](pugi::xml_node c) { return c.type() == pugi::node_cdata; }));
+}
+
+void set_text(pugi::xml_node node, const std::string& text, bool cdata) {
+  while (node.first_child()) node.remove_child(node.first_child());
+  if (text.empty()) return;
+  node.append_child(cdata ? pugi::node_cdata : pugi::node_pcdata).set_value(text.c_str());
+}
+
+std::vector<pugi::xml_node> element_children(pugi::xml_node node) {
+  std::vector<pugi::xml_node> out;
+  if (!node) return out;
+  for (const pugi::xml_node c : node.children()) {
+    if (c.type() == pugi::node_element) out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<std::string> element_keys(const std::vector<pugi::xml_node>& nodes) {
+  std::vector<std::string> keys;
+  std::map<std::string, int> unnamed;
+  for (const pugi::xml_node n : nodes) {
+    const char* name = n.attribute("Name") ? n.attribute("Name").value() : n.attribute("name").value();
+    if (*name != '\0') {
+      keys.push_back(fmt::format("{}|{}", n.name(), name));
+    } else {
+      keys.push_back(fmt::format("{}#{}", n.name(), unnamed[n.name()]++));
+    }
+  }
+  return keys;
+}
+
+// Whether two subtrees are the same (elements, attributes, text).
+bool same_tree(pugi::xml_node a, pugi::xml_node b) {
+  std::ostringstream sa;
+  std::ostringstream sb;
+  a.print(sa, "", pugi::format_raw);
+  b.print(sb, "", pugi::format_raw);
+  return sa.str() == sb.str();
+}
+
+class XmlMerger {
+ public:
+  explicit XmlMerger(const MergeLabels& labels) : labels_(labels) {}
+
+  void merge(pugi::xml_node base, pugi::xml_node ours, pugi::xml_node theirs, const std::string& path) {
+    merge_attributes(base, ours, theirs);
+    if (std::string_view(ours.name()) == "LineIds") return;  // TwinCAT recomputes them
+    if (is_text_element(ours) && is_text_element(theirs) && (!base || is_text_element(base))) {
+      merge_text(base, ours, theirs, path);
+      return;
+    }
+    const std::vector<pugi::xml_node> b = element_children(base);
+    const std::vector<pugi::xml_node> o = element_children(ours);
+    const std::vector<pugi::xml_node> t = element_children(theirs);
+    const std::vector<std::string> bk = element_keys(b);
+    const std::vector<std::string> ok = element_keys(o);
+    const std::vector<std::string> tk = element_keys(t);
+    pugi::xml_node previous;  // the last element of the result so far, in `ours`
+    for (const Slot& slot : align(bk, ok, tk)) {
+      const pugi::xml_node bn = slot.base >= 0 ? b[static_cast<size_t>(slot.base)] : pugi::xml_node();
+      const pugi::xml_node on = slot.ours >= 0 ? o[static_cast<size_t>(slot.ours)] : pugi::xml_node();
+      const pugi::xml_node tn = slot.theirs >= 0 ? t[static_cast<size_t>(slot.theirs)] : pugi::xml_node();
+      const std::string child_path = fmt::format(
+          "{}/{}", path, slot.ours >= 0 ? ok[static_cast<size_t>(slot.ours)] : tk[static_cast<size_t>(slot.theirs)]);
+      if (on && tn) {
+        merge(bn, on, tn, child_path);
+        previous = on;
+      } else if (on) {
+        if (bn && !same_tree(bn, on) && std::string_view(on.name()) != "LineIds") {
+          ++conflicts_;
+          notes_.push_back(fmt::format("{}: changed on our side, deleted on theirs: kept ours", child_path));
+          previous = on;
+        } else if (bn) {
+          remove_with_blank(ours, on);
+        } else {
+          previous = on;
+        }
+      } else if (tn) {
+        if (bn && !same_tree(bn, tn) && std::string_view(tn.name()) != "LineIds") {
+          ++conflicts_;
+          notes_.push_back(fmt::format("{}: deleted on our side, changed on theirs: kept theirs", child_path));
+          previous = insert_copy(ours, previous, theirs, tn);
+        } else if (!bn) {
+          previous = insert_copy(ours, previous, theirs, tn);
+        }
+      }
+    }
+  }
+
+  size_t conflicts() const { return conflicts_; }
+  std::vector<std::string>& notes() { return notes_; }
+
+ private:
+  static void merge_attributes(pugi::xml_node base, pugi::xml_node ours, pugi::xml_node theirs) {
+    std::vector<std::string> names;
+    for (const pugi::xml_attribute a : ours.attributes()) names.emplace_back(a.name());
+    for (const pugi::xml_attribute a : theirs.attributes()) {
+      if (std::find(names.begin(), names.end(), a.name()) == names.end()) names.emplace_back(a.name());
+    }
+    for (const std::string& name : names) {
+      const pugi::xml_attribute b = base.attribute(name.c_str());
+      pugi::xml_attribute o = ours.attribute(name.c_str());
+      const pugi::xml_attribute t = theirs.attribute(name.c_str());
+      const auto value = [](pugi::xml_attribute a) { return a ? std::optional<std::string>(a.value()) : std::nullopt; };
+      const std::optional<std::string> bv = value(b);
+      const std::optional<std::string> ov = value(o);
+      const std::optional<std::string> tv = value(t);
+      // Only their change of a value we left alone applies; where both changed it, ours stays
+      // (ids, product versions: metadata the vendor tool rewrites).
+      if (ov == tv || tv == bv || ov != bv) continue;
+      if (!tv) {
+        ours.remove_attribute(name.c_str());
+      } else if (o) {
+        o.set_value(tv->c_str());
+      } else {
+        ours.append_attribute(name.c_str()).set_value(tv->c_str());
+      }
+    }
+  }
+
+  void merge_text(pugi::xml_node base, pugi::xml_node ours, pugi::xml_node theirs, const std::string& path) {
+    const std::string b = text_of(base);
+    const std::string o = text_of(ours);
+    const std::string t = text_of(theirs);
+    if (o == t || t == b) return;
+    const bool cdata = uses_cdata(ours) || uses_cdata(theirs);
+    if (o == b) {
+      set_text(ours, t, cdata);
+      return;
+    }
+    MergeResult merged = merge_lines(b, o, t, labels_);
+    if (merged.conflicts > 0) notes_.push_back(fmt::format("{}: conflicting changes", path));
+    conflicts_ += merged.conflicts;
+    set_text(ours, merged.text, cdata);
+  }
+
+  // Copies `node` of their document after `previous` in `parent` (first when null), with the
+  // blank text before it on their side, so the indentation stays.
+  static pugi::xml_node insert_copy(pugi::xml_node parent, pugi::xml_node previous, pugi::xml_node /*their_parent*/,
+                                    pugi::xml_node node) {
+    const pugi::xml_node blank = node.previous_sibling();
+    const bool has_blank = blank && blank.type() == pugi::node_pcdata &&
+                           std::string_view(blank.value()).find_first_not_of(" \t\r\n") == std::string_view::npos;
+    pugi::xml_node inserted;
+    if (previous) {
+      inserted = parent.insert_copy_after(node, previous);
+      if (has_blank) parent.insert_copy_before(blank, inserted);
+    } else {
+      const std::vector<pugi::xml_node> elements = element_children(parent);
+      if (elements.empty()) {
+        if (has_blank) parent.append_copy(blank);
+        inserted = parent.append_copy(node);
+      } else {
+        inserted = parent.insert_copy_before(node, elements.front());
+        if (has_blank) parent.insert_copy_before(blank, elements.front());
+      }
+    }
+    return inserted;
+  }
+
+  static void remove_with_blank(pugi::xml_node parent, pugi::xml_node node) {
+    const pugi::xml_node blank = node.previous_sibling();
+    if (blank && blank.type() == pugi::node_pcdata &&
+        std::string_view(blank.value()).find_first_not_of(" \t\r\n") == std::string_view::npos) {
+      parent.remove_child(blank);
+    }
+    parent.remove_child(node);
+  }
+
+  const MergeLabels& labels_;
+  size_t conflicts_ = 0;
+  std::vector<std::string> notes_;
+};
+
+// A new GUID for a duplicated Id, derived from where the element is (deterministic output).
+std::string derived_guid(const std::string& seed) {
+  uint64_t h1 = 1469598103934665603ULL;
+  uint64_t h2 = 1099511628211ULL;
+  for (const char c : seed) {
+    h1 = (h1 ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+    h2 = (h2 ^ static_cast<unsigned char>(c)) * 14029467366897019727ULL + 1;
+  }
+  return fmt::format("{{{:08x}-{:04x}-4{:03x}-8{:03x}-{:012x}}}", static_cast<uint32_t>(h1 >> 32),
+                     static_cast<uint32_t>((h1 >> 16) & 0xffff), static_cast<uint32_t>(h1 & 0xfff),
+                     static_cast<uint32_t>(h2 >> 52), h2 & 0xffffffffffffULL);
+}
+
+void make_ids_unique(pugi::xml_node root, std::vector<std::string>& notes) {
+  std::map<std::string, int> seen;
+  int counter = 0;
+  std::vector<pugi::xml_node> stack{root};
+  while (!stack.empty()) {
+    const pugi::xml_node node = stack.back();
+    stack.pop_back();
+    pugi::xml_attribute id = node.attribute("Id");
+    // LineId elements number lines; only GUIDs ("{...}") are identities.
+    if (id && id.value()[0] == '{') {
+      if (++seen[keywords::upper(id.value())] > 1) {
+        const std::string fresh = derived_guid(fmt::format("{}/{}/{}", node.path(), id.value(), counter++));
+        notes.push_back(fmt::format("{}: duplicate Id {} replaced by {}", node.path(), id.value(), fresh));
+        id.set_value(fresh.c_str());
+      }
+    }
+    const std::vector<pugi::xml_node> children = element_children(node);
+    for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
+  }
+}
+
+// pugixml writes "<X/>" where TwinCAT writes "<X />": spelled as the input spelled it, outside
+// CDATA sections and attribute values.
+std::string restore_empty_element_spaces(const std::string& xml) {
+  std::string out;
+  out.reserve(xml.size() + xml.size() / 64);
+  bool in_tag = false;
+  char quote = 0;
+  for (size_t i = 0; i < xml.size(); ++i) {
+    const char c = xml[i];
+    if (!in_tag) {
+      if (xml.compare(i, 9, "<![CDATA[") == 0) {
+        const size_t end = xml.find("]]>", i + 9);
+        const size_t stop = end == std::string::npos ? xml.size() : end + 3;
+        out.append(xml, i, stop - i);
+        i = stop - 1;
+        continue;
+      }
+      if (c == '<') in_tag = true;
+      out += c;
+      continue;
+    }
+    if (quote != 0) {
+      if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '/' && i + 1 < xml.size() && xml[i + 1] == '>' && !out.empty() && out.back() != ' ') {
+      out += ' ';
+    } else if (c == '>') {
+      in_tag = false;
+    }
+    out += c;
+  }
+  return out;
+}
+
+constexpr unsigned kParseFlags = (pugi::parse_full | pugi::parse_ws_pcdata) & ~pugi::parse_eol;
+
+MergeResult merge_xml(std::string_view base, std::string_view ours, std::string_view theirs,
+                      const MergeLabels& labels) {
+  MergeResult result;
+  pugi::xml_document b;
+  pugi::xml_document o;
+  pugi::xml_document t;
+  for (const auto& [doc, text, side] :
+       {std::tuple{&b, base, "base"}, std::tuple{&o, ours, "ours"}, std::tuple{&t, theirs, "theirs"}}) {
+    const pugi::xml_parse_result parsed = doc->load_buffer(text.data(), text.size(), kParseFlags);
+    if (!parsed && !(text.empty() && doc == &b)) {
+      result.error =
+          fmt::format("malformed XML in the {} version at byte {}: {}", side, parsed.offset, parsed.description());
+      result.text = std::string(ours);
+      return result;
+    }
+  }
+  const pugi::xml_node ob = o.document_element();
+  const pugi::xml_node tb = t.document_element();
+  if (std::string_view(ob.name()) != tb.name()) {
+    result.error = fmt::format("the versions have different root elements (<{}> and <{}>)", ob.name(), tb.name());
+    result.text = std::string(ours);
+    return result;
+  }
+  XmlMerger merger(labels);
+  merger.merge(b.document_element(), ob, tb, ob.name());
+  result.conflicts = merger.conflicts();
+  result.notes = std::move(merger.notes());
+  make_ids_unique(ob, result.notes);
+
+  const bool bom = ours.substr(0, 3) == "\xEF\xBB\xBF";
+  std::ostringstream out;
+  o.save(out, "", pugi::format_raw | pugi::format_no_declaration | (bom ? pugi::format_write_bom : 0u),
+         pugi::encoding_utf8);
+  std::string text = out.str();
+  // The blank text between the declaration and the root element is not in pugixml's tree.
+  const size_t declaration_end = ours.find("?>");
+  const size_t root_begin = ours.find('<', declaration_end == std::string_view::npos ? 0 : declaration_end);
+  if (declaration_end != std::string_view::npos && root_begin != std::string_view::npos) {
+    const std::string_view blank = ours.substr(declaration_end + 2, root_begin - declaration_end - 2);
+    const size_t at = text.find("?>");
+    if (at != std::string::npos && blank.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+      text.insert(at + 2, blank);
+    }
+  }
+  if (ours.find(" />") != std::string_view::npos) text = restore_empty_element_spaces(text);
+  // Trailing blank after the root element, as ours had it.
+  const size_t last = ours.find_last_of('>');
+  if (last != std::string_view::npos) {
+    const std::string_view tail = ours.substr(last + 1);
+    if (tail.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+      while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+      text += tail;
+    }
+  }
+  result.text = std::move(text);
+  return result;
+}
+
+// ---- CODESYS .EXP: the exported objects ----
+
+std::optional<std::vector<Unit>> exp_units(std::string_view path, std::string_view text) {
+  const containers::ContainerDocument doc = containers::read_container(path, text);
+  if (doc.kind != containers::ContainerKind::CodesysExp || doc.objects.empty()) return std::nullopt;
+  std::vector<Unit> units;
+  uint32_t at = 0;
+  std::string key = "\x01head";
+  for (const containers::ContainerObject& object : doc.objects) {
+    if (object.file_offset < at) return std::nullopt;
+    units.push_back({key, std::string(text.substr(at, object.file_offset - at))});
+    key = fmt::format("{}:{}/{}", keywords::upper(object.kind), keywords::upper(object.path),
+                      keywords::upper(object.name));
+    at = object.file_offset;
+  }
+  units.push_back({key, std::string(text.substr(at))});
+  return units;
+}
+
+}  // namespace
+
+MergeResult merge_lines(std::string_view base, std::string_view ours, std::string_view theirs,
+                        const MergeLabels& labels) {
+  MergeResult result;
+  if (ours == theirs || theirs == base) {
+    result.text = std::string(ours);
+    return result;
+  }
+  if (ours == base) {
+    result.text = std::string(theirs);
+    return result;
+  }
+  const Lines b = format::split_lines(base);
+  const Lines o = format::split_lines(ours);
+  const Lines t = format::split_lines(theirs);
+  std::vector<SideChange> changes;
+  for (const auto& [lines, side] : {std::pair{&o, 0}, std::pair{&t, 1}}) {
+    for (const format::LineChange& c : format::diff_lines(b, *lines)) {
+      SideChange s;
+      s.begin = c.before_begin;
+      s.end = c.before_begin + c.before_count;
+      s.lines.assign(lines->begin() + static_cast<std::ptrdiff_t>(c.after_begin),
+                     lines->begin() + static_cast<std::ptrdiff_t>(c.after_begin + c.after_count));
+      s.side = side;
+      changes.push_back(std::move(s));
+    }
+  }
+  std::stable_sort(changes.begin(), changes.end(), [](const SideChange& x, const SideChange& y) {
+    return std::tie(x.begin, x.end, x.side) < std::tie(y.begin, y.end, y.side);
+  });
+  size_t at = 0;
+  for (size_t i = 0; i < changes.size();) {
+    size_t begin = changes[i].begin;
+    size_t end = changes[i].end;
+    size_t j = i + 1;
+    while (j < changes.size() && (changes[j].begin < end ||
+                                  (changes[j].begin == end && (changes[j].begin == changes[j].end || begin == end)))) {
+      end = std::max(end, changes[j].end);
+      ++j;
+    }
+    append_lines(result.text, b, at, begin);
+    bool ours_changed = false;
+    bool theirs_changed = false;
+    for (size_t k = i; k < j; ++k) (changes[k].side == 0 ? ours_changed : theirs_changed) = true;
+    const std::string mine = apply_side(b, changes, i, j, 0, begin, end);
+    const std::string other = apply_side(b, changes, i, j, 1, begin, end);
+    if (!theirs_changed || mine == other) {
+      result.text += mine;
+    } else if (!ours_changed) {
+      result.text += other;
+    } else {
+      append_conflict(result.text, mine, other, labels, line_end_of(ours));
+      ++result.conflicts;
+    }
+    at = end;
+    i = j;
+  }
+  append_lines(result.text, b, at, b.size());
+  return result;
+}
+
+MergeResult merge_file(std::string_view path, std::string_view base, std::string_view ours, std::string_view theirs,
+                       const MergeLabels& labels) {
+  const containers::ContainerKind kind = containers::detect_container(path, ours);
+  if (kind == containers::ContainerKind::TwinCat || kind == containers::ContainerKind::PlcOpen) {
+    return merge_xml(base, ours, theirs, labels);
+  }
+  // Text: decoded to UTF-8 for the parser, written back in our side's encoding.
+  const source::DecodedText b = source::decode(base);
+  const source::DecodedText o = source::decode(ours);
+  const source::DecodedText t = source::decode(theirs);
+  if (o.is_binary || t.is_binary || (b.is_binary && !base.empty())) {
+    MergeResult result;
+    result.text = std::string(ours);
+    result.error = "binary content: not merged";
+    return result;
+  }
+  std::optional<std::vector<Unit>> bu;
+  std::optional<std::vector<Unit>> ou;
+  std::optional<std::vector<Unit>> tu;
+  if (kind == containers::ContainerKind::CodesysExp) {
+    bu = exp_units(path, b.utf8);
+    ou = exp_units(path, o.utf8);
+    tu = exp_units(path, t.utf8);
+  } else {
+    bu = st_units(b.utf8);
+    ou = st_units(o.utf8);
+    tu = st_units(t.utf8);
+  }
+  MergeResult result;
+  if (bu && ou && tu && !has_duplicates(unit_keys(*bu)) && !has_duplicates(unit_keys(*ou)) &&
+      !has_duplicates(unit_keys(*tu))) {
+    result = merge_units(*bu, *ou, *tu, labels);
+  } else {
+    result = merge_lines(b.utf8, o.utf8, t.utf8, labels);
+    result.notes.emplace_back("merged line by line (a version does not parse into named objects)");
+  }
+  std::optional<std::string> encoded = source::encode(result.text, o.encoding, o.had_bom);
+  if (!encoded) {
+    encoded = source::encode(result.text, source::Encoding::Utf8, o.had_bom);
+    result.notes.emplace_back("written as UTF-8: their text has characters our encoding cannot hold");
+  }
+  result.text = std::move(*encoded);
+  return result;
+}
+
+}  // namespace rung::vcs
