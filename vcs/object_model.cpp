@@ -508,10 +508,28 @@ FileObjects read_objects(std::string_view path, std::string_view bytes, const Re
   return file;
 }
 
+// Without the "(* @PATH := '...' *)" marker lines of a CODESYS export (export bookkeeping).
+std::string without_export_markers(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  while (!text.empty()) {
+    const size_t nl = text.find('\n');
+    const std::string_view line = text.substr(0, nl == std::string_view::npos ? text.size() : nl + 1);
+    const std::string trimmed = collapse_blanks(line);
+    const bool marker = trimmed.rfind("(* @", 0) == 0 && trimmed.size() >= 6 &&
+                        trimmed.compare(trimmed.size() - 2, 2, "*)") == 0 && trimmed.find("*)") == trimmed.size() - 2;
+    if (!marker) out += line;
+    text.remove_prefix(line.size());
+  }
+  return out;
+}
+
 TextView text_view(std::string_view path, std::string_view bytes) {
   ReadText read = read_text(path, bytes);
   TextView view;
-  view.text = std::move(read.text);
+  view.text = read.container && read.container->kind == containers::ContainerKind::CodesysExp
+                  ? without_export_markers(read.text)
+                  : std::move(read.text);
   if (!view.text.empty() && view.text.back() != '\n') view.text += '\n';
   view.errors = std::move(read.errors);
   view.notes = std::move(read.notes);

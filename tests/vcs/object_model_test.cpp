@@ -145,5 +145,18 @@ TEST(TextView, TwinCatFileAsStText) {
             "\tnState = 2\n");
 }
 
+TEST(TextView, CodesysExportWithoutMarkersAndPlcOpenAsSt) {
+  const std::string data = (test::source_dir() / "tests/parser/containers/data").string();
+  const TextView exp = text_view("FB_Client.EXP", test::read_file(data + "/FB_Client.EXP"));
+  EXPECT_TRUE(exp.errors.empty());
+  EXPECT_EQ(exp.text.find("(* @"), std::string::npos);
+  EXPECT_EQ(exp.text.rfind("(*\tA client block; its comment sits between the markers and the header.\n", 0), 0u)
+      << exp.text;
+  const TextView xml = text_view("Small_plcopen.xml", test::read_file(data + "/Small_plcopen.xml"));
+  EXPECT_EQ(
+      xml.text.rfind("TYPE E_Mode : (Off := 0, Auto := 1); END_TYPE\nPROGRAM Blink\nVAR_INPUT\n\txOn : BOOL;\n", 0), 0u)
+      << xml.text;
+}
+
 }  // namespace
 }  // namespace rung::vcs
