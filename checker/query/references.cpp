@@ -51,7 +51,12 @@ std::vector<Location> find_references(const Workspace& workspace, const Symbol* 
     if (model.source(id).library && !in_library) continue;
     collect_in_source(model, id, target, include_declaration, references);
   }
-  std::sort(references.begin(), references.end(), [](const Location& a, const Location& b) {
+  // The project's own files first, then the library's: a user looks for their own uses, and the
+  // order must not depend on where the project and the library sit on disk.
+  std::sort(references.begin(), references.end(), [&model](const Location& a, const Location& b) {
+    const bool a_library = model.source(a.source).library;
+    const bool b_library = model.source(b.source).library;
+    if (a_library != b_library) return b_library;
     return a.path != b.path ? a.path < b.path : a.range.begin < b.range.begin;
   });
   return references;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "checker/check.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace rung::check {
 namespace {
@@ -74,7 +75,7 @@ Expectation malformed(std::string origin, std::string why) {
 }
 
 void read_seed_table(const fs::path& table, std::vector<Expectation>& out) {
-  const fs::path seeds = fs::path(RUNG_SHARED_DIR) / "corpus" / "seeds";
+  const fs::path seeds = rung::test::shared_dir() / "corpus" / "seeds";
   std::ifstream in(table);
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -104,7 +105,7 @@ void read_seed_table(const fs::path& table, std::vector<Expectation>& out) {
 
 // First line: (* fact: 000a.md#12 | profile: codesys | expect: E101@4 | status: ok | note: ... *)
 void read_fact_file(const fs::path& file, std::vector<Expectation>& out) {
-  const std::string origin = fs::relative(file, fs::path(RUNG_SOURCE_DIR) / "tests" / "checker" / "facts").string();
+  const std::string origin = fs::relative(file, rung::test::source_dir() / "tests" / "checker" / "facts").string();
   std::ifstream in(file);
   std::string header;
   std::getline(in, header);
@@ -143,7 +144,7 @@ void read_fact_file(const fs::path& file, std::vector<Expectation>& out) {
 
 std::vector<Expectation> all_expectations() {
   std::vector<Expectation> all;
-  const fs::path checker_tests = fs::path(RUNG_SOURCE_DIR) / "tests" / "checker";
+  const fs::path checker_tests = rung::test::source_dir() / "tests" / "checker";
   std::vector<fs::path> tables;
   for (const auto& entry : fs::directory_iterator(checker_tests / "seeds")) {
     if (entry.path().extension() == ".tsv") tables.push_back(entry.path());
@@ -240,7 +241,7 @@ TEST(ExpectationTables, EverySeedExampleHasOneRow) {
   for (const Expectation& expectation : expectations()) {
     if (expectation.name.starts_with("seed_")) rows.insert(expectation.file.lexically_normal().string());
   }
-  const fs::path seeds = fs::path(RUNG_SHARED_DIR) / "corpus" / "seeds";
+  const fs::path seeds = rung::test::shared_dir() / "corpus" / "seeds";
   ASSERT_TRUE(fs::exists(seeds)) << seeds << " is missing: the tests need ../shared next to the repository";
   size_t files = 0;
   for (const auto& entry : fs::recursive_directory_iterator(seeds)) {

@@ -22,6 +22,7 @@
 #include "parser/ast.hpp"
 #include "parser/document.hpp"
 #include "parser/file_walk.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace rung {
 namespace {
@@ -34,7 +35,7 @@ std::string upper(std::string_view text) {
   return out;
 }
 
-fs::path library_root() { return fs::path(RUNG_SOURCE_DIR) / "library"; }
+fs::path library_root() { return rung::test::source_dir() / "library"; }
 
 std::string library_relative(const fs::path& path) { return fs::relative(path, library_root()).generic_string(); }
 

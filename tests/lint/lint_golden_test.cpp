@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path rules_dir() { return fs::path(RUNG_SOURCE_DIR) / "tests" / "lint" / "rules"; }
+fs::path rules_dir() { return rung::test::source_dir() / "tests" / "lint" / "rules"; }
 
 // The file's text, or nullopt when it does not exist.
 std::optional<std::string> read_file(const fs::path& path) {

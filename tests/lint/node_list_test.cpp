@@ -12,6 +12,7 @@
 
 #include "checker/symbols/names.hpp"
 #include "parser/ast.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace rung::lint {
 namespace {
@@ -90,7 +91,7 @@ size_t expect_same_as_tree(const SyntaxTree& tree, const std::string& name) {
 }
 
 TEST(NodeList, MatchesTheTreeOnEveryGoldenRuleFile) {
-  const std::filesystem::path rules = std::filesystem::path(RUNG_SOURCE_DIR) / "tests/lint/rules";
+  const std::filesystem::path rules = rung::test::source_dir() / "tests/lint/rules";
   size_t files = 0;
   size_t compared = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(rules)) {

@@ -10,13 +10,14 @@
 #include <sstream>
 
 #include "tests/runner/run_support.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace rung::run::testing {
 namespace {
 
 // A seed example of the manuals (../shared/corpus/seeds), or "" when the corpus is not there.
 std::string seed(const std::string& relative) {
-  std::ifstream in(std::filesystem::path(RUNG_SHARED_DIR) / "corpus" / "seeds" / relative);
+  std::ifstream in(rung::test::shared_dir() / "corpus" / "seeds" / relative);
   if (!in) return {};
   std::stringstream text;
   text << in.rdbuf();

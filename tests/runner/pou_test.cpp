@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "tests/runner/run_support.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace rung::run::testing {
 namespace {
@@ -221,7 +222,7 @@ END_PROGRAM
 
 // Every PROGRAM of the example projects runs without a run-time error.
 TEST(RunPous, ExampleProjectRuns) {
-  const std::filesystem::path main_file = std::filesystem::path(RUNG_SOURCE_DIR) / "examples" / "run" / "tank.st";
+  const std::filesystem::path main_file = rung::test::source_dir() / "examples" / "run" / "tank.st";
   std::ifstream in(main_file);
   ASSERT_TRUE(in) << main_file;
   std::stringstream text;

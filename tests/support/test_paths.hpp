@@ -8,15 +8,12 @@
 
 namespace rung::test {
 
-inline std::filesystem::path source_dir() {
-  return RUNG_SOURCE_DIR;
-}
-inline std::filesystem::path shared_dir() {
-  return RUNG_SHARED_DIR;
-}
-inline std::filesystem::path rung_binary() {
-  return RUNG_BINARY;
-}
+// The repository, the shared corpus (../shared) and the built rung. Defined in test_paths.cpp,
+// the one file compiled with these paths, so that the other test files do not depend on where the
+// clone is (ccache then reuses their objects across clones, as CI's).
+std::filesystem::path source_dir();
+std::filesystem::path shared_dir();
+std::filesystem::path rung_binary();
 
 inline std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

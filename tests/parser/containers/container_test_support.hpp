@@ -12,11 +12,12 @@
 #include "parser/containers/container_document.hpp"
 #include "parser/source/decode.hpp"
 #include "parser/source/line_index.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace rung::containers::testing {
 
 inline std::string data_path(std::string_view name) {
-  return std::string(RUNG_SOURCE_DIR) + "/tests/parser/containers/data/" + std::string(name);
+  return rung::test::source_dir().string() + "/tests/parser/containers/data/" + std::string(name);
 }
 
 // The file's decoded text, as a reader receives it.
