@@ -309,8 +309,10 @@ int run_run_command(const RunCommandOptions& options, std::FILE* out, std::FILE*
       print_table(out, project, engine.machine(), list.name, list.variables, out_style);
     }
   }
-  if (failed && error) {
-    fmt::print(err, "{}{}{}\n", style.red(), run::describe_error(project, *error), style.reset());
+  // The run ends: FB_exit of the instances that declare it, after the report of the last cycle.
+  if (!failed && !engine.finish()) failed = true;
+  if (failed && engine.machine().error()) {
+    fmt::print(err, "{}{}{}\n", style.red(), run::describe_error(project, *engine.machine().error()), style.reset());
     keep_until_exit(std::move(loaded->workspace));
     return 1;
   }

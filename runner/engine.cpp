@@ -40,6 +40,16 @@ bool Engine::cycle() {
   return true;
 }
 
+bool Engine::finish() {
+  if (finished_) return !machine_->error();
+  finished_ = true;
+  if (machine_->error()) return false;
+  for (const Program::InitCall& exit : project_.program->exit_calls) {
+    if (!machine_->call(exit.callable, exit.instance)) return false;
+  }
+  return true;
+}
+
 std::string describe_error(const CompiledProject& project, const RunError& error) {
   const check::ProjectModel& model = project.layouts->model();
   std::string text = fmt::format("run-time error: {}", error.message);

@@ -21,6 +21,9 @@ class Engine {
   // One cycle: every task due at the current time runs its programs (highest priority first);
   // then the clock advances by one tick. False after a run-time error (machine().error()).
   bool cycle();
+  // The end of the run: FB_exit of every instance that declares it (once; later calls do
+  // nothing). False after a run-time error in one of them.
+  bool finish();
 
   uint64_t cycles() const { return cycles_; }
   uint64_t now_ns() const { return now_ns_; }
@@ -35,6 +38,7 @@ class Engine {
   uint64_t tick_ns_ = 10'000'000;
   uint64_t now_ns_ = 0;
   uint64_t cycles_ = 0;
+  bool finished_ = false;
 };
 
 // A run-time error as people read it: "error: division by zero\n  --> file:line:col\n  in ...".

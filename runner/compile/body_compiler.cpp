@@ -25,49 +25,41 @@ uint32_t BodyCompiler::here() const { return static_cast<uint32_t>(lowering_.pro
 
 void BodyCompiler::patch(uint32_t at, uint32_t target) { lowering_.program().code[at].a = target; }
 
-void BodyCompiler::runtime_initial_values(const Symbol* owner) {
-  // `x : T := expression` computed in code, in declaration order.
-  for (const Symbol* variable : lowering_.runtime_initialized(owner)) {
-    SyntaxNode value_node = variable->node.child_by_field("value");
-    set_position(value_node);
-    Place target = variable_place(variable);
-    if (!target.type) continue;
-    const bool aggregate = scalar_kind(target.type) == Scalar::None;
-    if (Layouts::held_by_reference(variable)) {
-      // REFERENCE TO x := y: the slot takes y's address.
-      const Storage storage = lowering_.storage_of(variable, pou_);
-      auto source = place(value_node);
-      if (!source) {
-        fail(value_node, "a REFERENCE's initial value must be a variable");
-        continue;
-      }
-      lowering_.program().code.pop_back();  // the load variable_place() emitted for the slot
-      lowering_.program().positions.pop_back();
-      address_of(*source);
-      emit(storage.kind == Storage::Kind::Global     ? Op::ST_64_G
-           : storage.kind == Storage::Kind::Instance ? Op::ST_64_I
-                                                     : Op::ST_64_F,
-           static_cast<uint32_t>(storage.offset));
-      continue;
+void BodyCompiler::runtime_initial_value(const Symbol* variable) {
+  // `x : T := expression` computed in code.
+  SyntaxNode value_node = variable->node.child_by_field("value");
+  set_position(value_node);
+  Place target = variable_place(variable);
+  if (!target.type) return;
+  const bool aggregate = scalar_kind(target.type) == Scalar::None;
+  if (Layouts::held_by_reference(variable)) {
+    // REFERENCE TO x := y: the slot takes y's address.
+    const Storage storage = lowering_.storage_of(variable, pou_);
+    auto source = place(value_node);
+    if (!source) {
+      fail(value_node, "a REFERENCE's initial value must be a variable");
+      return;
     }
-    if (target.mode == Place::Mode::Pointer || aggregate) target = as_pointer(target);
-    const Type* pushed = value(value_node, target.type);
-    store(target, pushed);
+    lowering_.program().code.pop_back();  // the load variable_place() emitted for the slot
+    lowering_.program().positions.pop_back();
+    address_of(*source);
+    emit(storage.kind == Storage::Kind::Global     ? Op::ST_64_G
+         : storage.kind == Storage::Kind::Instance ? Op::ST_64_I
+                                                   : Op::ST_64_F,
+         static_cast<uint32_t>(storage.offset));
+    return;
   }
+  if (target.mode == Place::Mode::Pointer || aggregate) target = as_pointer(target);
+  const Type* pushed = value(value_node, target.type);
+  store(target, pushed);
 }
 
 void BodyCompiler::compile() {
   Program& program = lowering_.program();
-  if (program.callables[callable_index_].kind == CallableKind::Init) {
-    const uint32_t begin = here();
-    runtime_initial_values(pou_);
-    emit(Op::RET);
-    Callable& callable = program.callables[callable_index_];
-    callable.code_begin = begin;
-    callable.code_end = here();
-    callable.compiled = true;
-    callable.frame_size = static_cast<uint32_t>((frame_size_ + 7) / 8 * 8);
-    callable.frame_image.assign(callable.frame_size, 0);
+  const CallableKind kind = program.callables[callable_index_].kind;
+  if (kind == CallableKind::Init || kind == CallableKind::Construct || kind == CallableKind::Exit ||
+      kind == CallableKind::Destruct) {
+    compile_lifecycle();
     return;
   }
   const PouLayout& layout = lowering_.layouts().pou(pou_);
@@ -100,8 +92,9 @@ void BodyCompiler::compile() {
   }
   const uint32_t begin = here();
   position_ = pou_->node.begin();
-  // A function's or method's locals with computed initial values, on every call.
-  if (pou_->kind != SymbolKind::Program) runtime_initial_values(pou_);
+  // The frame's variables with computed initial values or FB instances (a function's or method's
+  // locals, VAR_TEMP), on every call.
+  initialize_variables(pou_, true);
   if (body) {
     const std::string_view kind = body.kind();
     if (kind == "statement_list") {
@@ -125,8 +118,12 @@ void BodyCompiler::compile() {
     }
     patch(jump, found->second);
   }
+  finish_callable(begin, std::move(frame_image));
+}
+
+void BodyCompiler::finish_callable(uint32_t begin, std::vector<uint8_t> frame_image) {
   emit(Op::RET);
-  Callable& callable = program.callables[callable_index_];
+  Callable& callable = lowering_.program().callables[callable_index_];
   callable.code_begin = begin;
   callable.code_end = here();
   callable.compiled = true;

@@ -184,14 +184,21 @@ CompiledProject compile_project(const check::ProjectModel& model, const CompileO
     out.tasks.push_back(std::move(task));
   }
 
-  // Computed initial values: the global lists' first, then each program's.
+  // Computed initial values and FB instances built (FB_init): the global lists' first, then each
+  // program's. FB_exit at the end in the reverse order: programs last to first, then the lists.
+  std::vector<const Symbol*> global_lists;
   for (check::SourceId id = 0; id < model.source_count(); ++id) {
     if (model.source(id).library) continue;
     for (const Symbol* symbol : model.top_level_symbols(id)) {
-      if (symbol->kind == SymbolKind::GlobalList) lowering.init_callable(symbol, 0);
+      if (symbol->kind == SymbolKind::GlobalList) global_lists.push_back(symbol);
     }
   }
+  for (const Symbol* list : global_lists) lowering.init_callable(list, 0);
   for (const ProgramInstance& program : out.programs) lowering.init_callable(program.program, program.address);
+  for (auto program = out.programs.rbegin(); program != out.programs.rend(); ++program) {
+    lowering.exit_callable(program->program, program->address);
+  }
+  for (auto list = global_lists.rbegin(); list != global_lists.rend(); ++list) lowering.exit_callable(*list, 0);
 
   lowering.compile_queue();
   lowering.build_vtables();

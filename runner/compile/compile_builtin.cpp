@@ -498,6 +498,18 @@ std::optional<const Type*> BodyCompiler::builtin_call(std::string_view name, Syn
     convert(elementary("ULINT"), result);
     return result;
   }
+  if ((upper == "LOWER_BOUND" || upper == "UPPER_BOUND") && need(2)) {
+    // LOWER_BOUND(arr, 1): the first dimension's bound; a constant for a fixed array, the caller's
+    // array's bound for an ARRAY[*] parameter.
+    const auto dimension = lowering_.model().constant_value(args[1], pou_);
+    if (!dimension || !dimension->is_integer() || dimension->integer < 1 ||
+        !push_bound(args[0], static_cast<size_t>(dimension->integer - 1), upper == "UPPER_BOUND")) {
+      fail(call_node, fmt::format("{} needs an array and the constant number of one of its dimensions", upper));
+      emit(Op::PUSH, 0, 0);
+    }
+    convert(lint, result);
+    return result;
+  }
   if (upper == "TIME" && args.empty()) {
     native_call(native_time_ms, "TIME");
     return elementary("TIME");
@@ -547,11 +559,33 @@ std::optional<const Type*> BodyCompiler::builtin_call(std::string_view name, Syn
       emit(Op::DUP);
       emit(Op::ADDR_G, static_cast<uint32_t>(at));
       emit(Op::COPY, static_cast<uint32_t>(size));
+      // Then built as a declared instance is: members, computed values, FB_init (CODESYS calls
+      // FB_init from __NEW).
+      const Symbol* block = storage->kind == TypeKind::Pou ? storage->declaration : nullptr;
+      if (block && lowering_.needs_init(block)) {
+        const uint64_t temp = temporary(elementary("LWORD"));
+        emit(Op::DUP);
+        emit(Op::ST_64_F, static_cast<uint32_t>(temp));
+        construct_instance(block, [&] { emit(Op::LD_I64_F, static_cast<uint32_t>(temp)); }, SyntaxNode());
+      }
     }
     return result;
   }
   if (upper == "__DELETE" && need(1)) {
+    // An FB instance gets its FB_exit first (CODESYS calls it from __DELETE).
+    const Type* pointer = Layouts::storage_type(arg_type(0));
+    const Type* target = pointer && pointer->kind == TypeKind::Pointer ? Layouts::storage_type(pointer->element) : nullptr;
+    const Symbol* block = target && target->kind == TypeKind::Pou ? target->declaration : nullptr;
     value(args[0]);
+    if (block && lowering_.needs_exit(block)) {
+      const uint64_t temp = temporary(elementary("LWORD"));
+      emit(Op::ST_64_F, static_cast<uint32_t>(temp));
+      emit(Op::LD_I64_F, static_cast<uint32_t>(temp));
+      const uint32_t skip = emit(Op::JZ);
+      destruct_instance(block, [&] { emit(Op::LD_I64_F, static_cast<uint32_t>(temp)); });
+      patch(skip, here());
+      emit(Op::LD_I64_F, static_cast<uint32_t>(temp));
+    }
     native_call(native_delete_block, "__DELETE");
     return lowering_.model().types().void_type();
   }

@@ -123,6 +123,21 @@ void BodyCompiler::in_out_address(SyntaxNode argument, const Symbol* parameter) 
   emit(Op::ADDR_F, static_cast<uint32_t>(temp));
 }
 
+void BodyCompiler::bind_open_bounds(SyntaxNode argument, const Symbol* parameter,
+                                    const std::function<Place(uint64_t offset)>& bound_slot) {
+  const size_t dimensions = Layouts::open_dimensions(parameter);
+  for (size_t d = 0; d < dimensions; ++d) {
+    for (const bool upper : {false, true}) {
+      const Place slot = bound_slot(Layouts::kOpenBoundsOffset + 16 * d + (upper ? 8 : 0));
+      if (!push_bound(argument, d, upper)) {
+        fail(argument, "rung passes to an ARRAY[*] parameter only an array variable or an ARRAY[*] parameter");
+        emit(Op::PUSH, 0, 0);
+      }
+      store(slot, elementary("LINT"));
+    }
+  }
+}
+
 void BodyCompiler::bind_frame_arguments(const Symbol* callee, const std::vector<check::CallArgument>& arguments) {
   const std::vector<const Symbol*> positional = positional_parameters(callee);
   Layouts& layouts = lowering_.layouts();
@@ -140,6 +155,10 @@ void BodyCompiler::bind_frame_arguments(const Symbol* callee, const std::vector<
     if (parameter->section == ast::VarSection::InOut) {
       in_out_address(argument.value, parameter);
       emit(Op::ST_64_P);
+      bind_open_bounds(argument.value, parameter, [&](uint64_t at) {
+        emit(Op::ADDR_N, static_cast<uint32_t>(offset + at));
+        return Place{Place::Mode::Pointer, 0, elementary("LINT"), -1, nullptr};
+      });
       continue;
     }
     if (parameter->section == ast::VarSection::Output) {
@@ -147,6 +166,7 @@ void BodyCompiler::bind_frame_arguments(const Symbol* callee, const std::vector<
       continue;
     }
     const Type* pushed = value(argument.value, parameter->type);
+    range_check(parameter->type);
     store(Place{Place::Mode::Pointer, 0, parameter->type, -1, parameter}, pushed);
   }
 }
@@ -238,12 +258,17 @@ const Type* BodyCompiler::instance_call(const Symbol* pou_type, const Place& ins
       if (slot.mode == Place::Mode::Pointer) slot = as_pointer(slot);
       in_out_address(argument.value, parameter);
       store(slot, slot.type);
+      bind_open_bounds(argument.value, parameter, [&](uint64_t at) {
+        Place bound = field_of(*this, ref, offset + at, elementary("LINT"));
+        return bound.mode == Place::Mode::Pointer ? as_pointer(bound) : bound;
+      });
       continue;
     }
     Place target = field_of(*this, ref, offset, parameter->type);
     const bool aggregate = scalar_kind(parameter->type) == Scalar::None;
     if (target.mode == Place::Mode::Pointer || aggregate) target = as_pointer(target);
     const Type* pushed = value(argument.value, parameter->type);
+    if (!aggregate) range_check(parameter->type);
     store(target, pushed);
   }
   const uint32_t callable = lowering_.callable_for(body);

@@ -4,6 +4,8 @@
 // on every array index, every divisor, every assignment to a subrange and every dereference —
 // never inside the check functions themselves, and never in a POU marked
 // {attribute 'no_check'}.
+#include <functional>
+
 #include "checker/symbols/names.hpp"
 #include "runner/compile/lowering.hpp"
 
@@ -24,7 +26,8 @@ bool is_check_function(const Symbol* pou) {
 }  // namespace
 
 const Symbol* BodyCompiler::check_function(std::string_view name) const {
-  if (is_check_function(pou_) || pou_->attribute("no_check")) return nullptr;
+  // CODESYS does not check POUs of libraries (the standard blocks' bodies here).
+  if (is_check_function(pou_) || pou_->attribute("no_check") || pou_->has(check::kLibrary)) return nullptr;
   for (const Symbol* owner = pou_->owner; owner; owner = owner->owner) {
     if (owner->attribute("no_check")) return nullptr;
   }
@@ -34,6 +37,14 @@ const Symbol* BodyCompiler::check_function(std::string_view name) const {
 }
 
 void BodyCompiler::call_check(const Symbol* function, const Type* value_type, const std::vector<int64_t>& extra) {
+  std::vector<std::function<void()>> pushers;
+  pushers.reserve(extra.size());
+  for (const int64_t value : extra) pushers.emplace_back([this, value] { emit(Op::PUSH, 0, value); });
+  call_check_computed(function, value_type, pushers);
+}
+
+void BodyCompiler::call_check_computed(const Symbol* function, const Type* value_type,
+                                       const std::vector<std::function<void()>>& extra) {
   // The value on top goes through the check function: value := Check(value, extra...).
   std::vector<const Symbol*> inputs;
   for (const Symbol* member : function->ordered) {
@@ -53,7 +64,7 @@ void BodyCompiler::call_check(const Symbol* function, const Type* value_type, co
   store(Place{Place::Mode::Pointer, 0, inputs[0]->type, -1, nullptr}, inputs[0]->type);
   for (size_t i = 0; i < extra.size(); ++i) {
     emit(Op::ADDR_N, static_cast<uint32_t>(layouts.offset(inputs[i + 1])));
-    emit(Op::PUSH, 0, extra[i]);
+    extra[i]();
     convert(elementary("LINT"), inputs[i + 1]->type);
     store(Place{Place::Mode::Pointer, 0, inputs[i + 1]->type, -1, nullptr}, inputs[i + 1]->type);
   }
@@ -62,6 +73,16 @@ void BodyCompiler::call_check(const Symbol* function, const Type* value_type, co
   emit(Op::ADDR_R, static_cast<uint32_t>(layouts.pou(function).result_offset));
   load(Place{Place::Mode::Pointer, 0, result, -1, nullptr});
   convert(result, value_type);
+}
+
+void BodyCompiler::range_check(const Type* target) {
+  // CODESYS calls CheckRangeSigned/CheckRangeUnsigned on every assignment to a variable of a
+  // subrange type; the value stored is the function's result.
+  const Type* type = check::underlying(target);
+  if (!type || type->kind != TypeKind::Subrange || !type->element) return;
+  const Symbol* function = check_function(check::is_signed(type->element) ? "CheckRangeSigned" : "CheckRangeUnsigned");
+  if (!function) return;
+  call_check(function, target, {type->range_lower, type->range_upper});
 }
 
 }  // namespace rung::run

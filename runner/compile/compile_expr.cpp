@@ -532,7 +532,7 @@ const Type* BodyCompiler::unary(SyntaxNode node, const ExprInfo& in) {
 
 // --- places ---------------------------------------------------------------------------------------
 
-Place BodyCompiler::variable_place(const Symbol* variable) {
+Place BodyCompiler::slot_place(const Symbol* variable) {
   Place place;
   place.symbol = variable;
   place.type = variable->type;
@@ -548,7 +548,12 @@ Place BodyCompiler::variable_place(const Symbol* variable) {
   }
   place.offset = storage.offset;
   place.bit = storage.bit;
-  if (Layouts::held_by_reference(variable)) {
+  return place;
+}
+
+Place BodyCompiler::variable_place(const Symbol* variable) {
+  Place place = slot_place(variable);
+  if (place.type && Layouts::held_by_reference(variable)) {
     // The slot holds the address of the value.
     emit(load_op(Scalar::U64, place.mode), static_cast<uint32_t>(place.offset));
     place.mode = Place::Mode::Pointer;
@@ -557,6 +562,30 @@ Place BodyCompiler::variable_place(const Symbol* variable) {
     if (type && type->kind == TypeKind::Reference) place.type = type->element;
   }
   return place;
+}
+
+bool BodyCompiler::push_bound(SyntaxNode array, size_t dimension, bool upper) {
+  while (array && array.kind() == "parenthesized_expression" && array.named_child_count() == 1) {
+    array = array.named_child(0);
+  }
+  const ExprInfo in = info(array);
+  const Type* type = Layouts::storage_type(in.type);
+  if (!type || type->kind != TypeKind::Array || dimension >= type->dimensions.size()) return false;
+  const check::ArrayDimension& bounds = type->dimensions[dimension];
+  if (!bounds.open) {
+    emit(Op::PUSH, 0, upper ? bounds.upper : bounds.lower);
+    return true;
+  }
+  // ARRAY[*]: the bounds the caller stored in the parameter's slot.
+  const Symbol* variable = in.symbol;
+  if (array.kind() != "identifier" || !variable || Layouts::open_dimensions(variable) == 0) return false;
+  Place slot = slot_place(variable);
+  if (!slot.type) return false;
+  slot.offset += Layouts::kOpenBoundsOffset + 16 * dimension + (upper ? 8 : 0);
+  slot.type = elementary("LINT");
+  slot.bit = -1;
+  load(slot);
+  return true;
 }
 
 Place BodyCompiler::as_pointer(const Place& place) {
@@ -776,8 +805,33 @@ std::optional<Place> BodyCompiler::index_place(SyntaxNode node) {
     for (size_t d = 0; d < type->dimensions.size() && next < indices.size(); ++d) {
       const check::ArrayDimension& dimension = type->dimensions[d];
       if (dimension.open) {
-        fail(node, "indexing an ARRAY[*] parameter is not supported yet");
-        return std::nullopt;
+        // ARRAY[*]: bounds and strides from the slot, at run time.
+        const Symbol* parameter = object.kind() == "identifier" ? object_info.symbol : nullptr;
+        if (next != d || !parameter || Layouts::open_dimensions(parameter) == 0) {
+          fail(node, "rung indexes an ARRAY[*] parameter only through its own name");
+          return std::nullopt;
+        }
+        value(indices[next++], index_type);
+        if (const Symbol* bounds = check_function("CheckBounds")) {
+          call_check_computed(bounds, index_type,
+                              std::vector<std::function<void()>>{[&] { push_bound(object, d, false); },
+                                                        [&] { push_bound(object, d, true); }});
+        }
+        push_bound(object, d, false);
+        push_bound(object, d, true);
+        emit(Op::BOUNDS);
+        emit(Op::PUSH, 0, static_cast<int64_t>(element_size));
+        for (size_t k = d + 1; k < type->dimensions.size(); ++k) {
+          push_bound(object, k, true);
+          push_bound(object, k, false);
+          emit(Op::SUB);
+          emit(Op::PUSH, 0, 1);
+          emit(Op::ADD);
+          emit(Op::MUL);
+        }
+        emit(Op::MUL);
+        emit(Op::ADD);
+        continue;
       }
       value(indices[next++], index_type);
       if (const Symbol* bounds = check_function("CheckBounds")) {
@@ -802,7 +856,15 @@ std::optional<Place> BodyCompiler::deref_place(SyntaxNode node, const ExprInfo& 
     emit(Op::ADDR_I, 0);
     return Place{Place::Mode::Pointer, 0, in.type, -1, nullptr};
   }
-  value(operand);
+  const Type* pointer_type = value(operand);
+  if (const Symbol* check = check_function("CheckPointer")) {
+    // CODESYS: CheckPointer(ptToTest, iSize, iGran, bWrite) on every dereference; the pointer used
+    // is its result.
+    Layouts& layouts = lowering_.layouts();
+    call_check(check, pointer_type,
+               {static_cast<int64_t>(layouts.of(in.type).size), static_cast<int64_t>(layouts.granularity(in.type)),
+                writing_ ? 1 : 0});
+  }
   return Place{Place::Mode::Pointer, 0, in.type, -1, nullptr};
 }
 

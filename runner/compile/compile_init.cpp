@@ -190,29 +190,30 @@ bool needs_runtime(const check::ProjectModel& model, SyntaxNode value, const Sym
 
 }  // namespace
 
-const std::vector<const Symbol*>& Lowering::runtime_initialized(const Symbol* owner) const {
-  static const std::vector<const Symbol*> kNone;
-  auto found = runtime_initialized_.find(owner);
-  return found == runtime_initialized_.end() ? kNone : found->second;
+bool Lowering::computed_initial(const Symbol* variable) const {
+  SyntaxNode value = variable->node.child_by_field("value");
+  const Symbol* owner = variable->owner;
+  if (!value || !owner || variable->kind != SymbolKind::Variable) return false;
+  if (variable->section == ast::VarSection::Stat || variable->section == ast::VarSection::External) return false;
+  if (!needs_runtime(model_, value, owner)) return false;
+  // Programs, global lists, FB instances (their constructor) and call frames compute such values
+  // in code; a structure's field initialiser must stay a constant.
+  switch (owner->kind) {
+    case SymbolKind::Program:
+    case SymbolKind::GlobalList:
+    case SymbolKind::Function:
+    case SymbolKind::Method:
+    case SymbolKind::FunctionBlock:
+    case SymbolKind::Class: return true;
+    default: return variable->section == ast::VarSection::Temp;
+  }
 }
 
 void Lowering::write_variable_initial(std::vector<uint8_t>& bytes, uint64_t at, const Symbol* variable) {
   const Type* type = variable->type;
   if (!type) return;
   SyntaxNode value = variable->node.child_by_field("value");
-  const Symbol* owner = variable->owner;
-  if (value && owner && needs_runtime(model_, value, owner)) {
-    // Programs, global lists and call frames compute such values in code; an FB instance's
-    // would need a per-instance initialiser (FB_init), which rung does not generate yet.
-    const bool supported = owner->kind == SymbolKind::Program || owner->kind == SymbolKind::GlobalList ||
-                           owner->kind == SymbolKind::Function || owner->kind == SymbolKind::Method ||
-                           variable->section == ast::VarSection::Temp;
-    if (supported) {
-      auto& list = runtime_initialized_[owner];
-      if (std::find(list.begin(), list.end(), variable) == list.end()) list.push_back(variable);
-      return;
-    }
-  }
+  if (computed_initial(variable)) return;  // computed in code (initialize_variables)
   if (Layouts::held_by_reference(variable)) return;
   if (!value) {
     write_default(bytes, at, type);

@@ -117,7 +117,9 @@ void BodyCompiler::assignment(SyntaxNode left, SyntaxNode right, std::string_vie
     emit(op_store, static_cast<uint32_t>(storage.offset));
     return;
   }
+  writing_ = true;
   auto target = place(left);
+  writing_ = false;
   if (!target || !target->type) {
     fail(left, "rung cannot assign to this yet");
     return;
@@ -173,6 +175,7 @@ void BodyCompiler::assignment(SyntaxNode left, SyntaxNode right, std::string_vie
   }
   if (at.mode == Place::Mode::Pointer) at = as_pointer(at);
   value(right, at.type);
+  range_check(at.type);
   store(at, at.type);
 }
 

@@ -114,6 +114,38 @@ bool Layouts::held_by_reference(const Symbol* variable) {
   return type && type->kind == TypeKind::Reference;
 }
 
+size_t Layouts::open_dimensions(const Symbol* variable) {
+  if (!held_by_reference(variable)) return 0;
+  const Type* type = storage_type(variable->type);
+  if (!type || type->kind != TypeKind::Array) return 0;
+  size_t open = 0;
+  for (const check::ArrayDimension& dimension : type->dimensions) open += dimension.open ? 1 : 0;
+  return open == 0 ? 0 : type->dimensions.size();
+}
+
+uint64_t Layouts::granularity(const Type* type, int depth) {
+  type = storage_type(type);
+  if (!type || depth > 32) return 1;
+  switch (type->kind) {
+    case TypeKind::Array: return granularity(type->element, depth + 1);
+    case TypeKind::String: return 1;
+    case TypeKind::WString: return 2;
+    case TypeKind::Struct:
+    case TypeKind::Union:
+    case TypeKind::Pou: {
+      uint64_t largest = 1;
+      if (!type->declaration) return of(type).alignment;
+      for (const Symbol* member : type->declaration->ordered) {
+        if (member->kind == SymbolKind::Variable && member->type) {
+          largest = std::max(largest, held_by_reference(member) ? 8 : granularity(member->type, depth + 1));
+        }
+      }
+      return largest;
+    }
+    default: return std::max<uint64_t>(1, of(type).size);
+  }
+}
+
 bool Layouts::in_instance(const Symbol* variable) {
   switch (variable->section) {
     case ast::VarSection::Var:
@@ -138,7 +170,7 @@ TypeLayout Layouts::of(const Type* type) {
 }
 
 TypeLayout Layouts::variable_layout(const Symbol* variable, int depth) {
-  if (held_by_reference(variable)) return TypeLayout{8, 8};
+  if (held_by_reference(variable)) return TypeLayout{kOpenBoundsOffset + 16 * open_dimensions(variable), 8};
   return compute(variable->type, depth + 1);
 }
 

@@ -78,11 +78,18 @@ class Layouts {
   static Scalar scalar_of(const check::Type* type);
   // Whether a variable is stored as an address of its value (VAR_IN_OUT, REFERENCE TO).
   static bool held_by_reference(const check::Symbol* variable);
+  // ARRAY[*] parameters: the number of dimensions whose bounds come with the argument. Their slot
+  // holds the address, then per dimension its lower and upper bound (LINT each):
+  // kOpenBoundsOffset + 16 * d (lower) and + 8 (upper).
+  static size_t open_dimensions(const check::Symbol* variable);
+  static constexpr uint64_t kOpenBoundsOffset = 8;
   // Variables kept in an instance (not VAR_TEMP, VAR_STAT, VAR_EXTERNAL, VAR_GLOBAL).
   static bool in_instance(const check::Symbol* variable);
   static bool has_instance_header(const check::Symbol* pou);
   // A function's, method's or property accessor's result type; nullptr when it has none.
   static const check::Type* result_type(const check::Symbol* pou);
+  // The size of the largest elementary type inside `type` (CheckPointer's iGran).
+  uint64_t granularity(const check::Type* type, int depth = 0);
 
  private:
   TypeLayout compute(const check::Type* type, int depth);

@@ -29,6 +29,16 @@ CallableKind callable_kind(const Symbol* pou) {
   }
 }
 
+
+// The POU whose instance a member POU (method, action, accessor) runs on.
+const Symbol* instance_owner(const Symbol* pou) {
+  const Symbol* owner = pou->owner;
+  if (owner && owner->kind == SymbolKind::Property) owner = owner->owner;
+  return owner;
+}
+
+}  // namespace
+
 std::string qualified_name(const Symbol* pou) {
   std::vector<std::string_view> parts{pou->name};
   for (const Symbol* owner = pou->owner; owner; owner = owner->owner) {
@@ -42,15 +52,6 @@ std::string qualified_name(const Symbol* pou) {
   }
   return name;
 }
-
-// The POU whose instance a member POU (method, action, accessor) runs on.
-const Symbol* instance_owner(const Symbol* pou) {
-  const Symbol* owner = pou->owner;
-  if (owner && owner->kind == SymbolKind::Property) owner = owner->owner;
-  return owner;
-}
-
-}  // namespace
 
 Lowering::Lowering(const check::ProjectModel& model, Program& program, Layouts& layouts)
     : model_(model), program_(program), layouts_(layouts) {
@@ -244,8 +245,20 @@ Storage Lowering::storage_of(const Symbol* variable, const Symbol* callable_pou)
 }
 
 uint32_t Lowering::init_callable(const Symbol* owner, uint64_t instance) {
-  if (auto found = init_callables_.find(owner); found != init_callables_.end()) return found->second;
-  if (runtime_initialized(owner).empty()) return kNoCallable;
+  if (auto found = init_callables_.find(owner); found != init_callables_.end()) {
+    // Another instance of the same program (two tasks calling it) starts the same way.
+    if (found->second != kNoCallable) program_.init_calls.push_back(Program::InitCall{found->second, instance});
+    return found->second;
+  }
+  bool needed = false;
+  for (const Symbol* variable : owner->ordered) {
+    if (variable->kind != SymbolKind::Variable || variable->section == ast::VarSection::External) continue;
+    if (computed_initial(variable) || instance_needs_init(variable)) needed = true;
+  }
+  if (!needed) {
+    init_callables_.emplace(owner, kNoCallable);
+    return kNoCallable;
+  }
   Callable callable;
   callable.name = qualified_name(owner) + " (initial values)";
   callable.kind = CallableKind::Init;

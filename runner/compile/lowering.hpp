@@ -2,6 +2,7 @@
 // compiler of one callable's body (BodyCompiler, split over compile_*.cpp by concern).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -25,6 +26,9 @@ inline Scalar scalar_kind(const Type* type) { return Layouts::scalar_of(type); }
 
 // How a TIME, DATE, TOD or DT type counts (milliseconds, seconds, nanoseconds).
 TimeUnit time_unit_of(const Type* type);
+
+// A POU's name with its owners' (FB_Motor.Start): how callables are named in errors and dumps.
+std::string qualified_name(const Symbol* pou);
 
 // Where a variable lives, as a body sees it.
 struct Storage {
@@ -86,11 +90,34 @@ class Lowering {
   void write_constant(std::vector<uint8_t>& bytes, uint64_t at, const Type* type, const check::ConstValue& value);
   void write_instance(std::vector<uint8_t>& bytes, uint64_t at, const Symbol* pou, int depth);
 
-  // Initial values computed when the program starts (not constants): per owner (a PROGRAM, a
-  // global list, or a function's frame), in declaration order.
-  const std::vector<const Symbol*>& runtime_initialized(const Symbol* owner) const;
-  // The init callable of a program or global list (kNoCallable when it needs none).
+  // The init callable of a program or global list (kNoCallable when it needs none); each call
+  // adds a run of it with THIS = `instance` to the program's start.
   uint32_t init_callable(const Symbol* owner, uint64_t instance);
+  // Whether `variable`'s initial value is computed in code (not a constant).
+  bool computed_initial(const Symbol* variable) const;
+
+  // FB instances' life cycle (compile_lifecycle.cpp). An instance of `block` needs code when it is
+  // created if a variable of it (or of its base) has a computed initial value or is an instance
+  // that needs code, or when the block or a base has FB_init; when it is removed if FB_exit is
+  // declared in it, a base or a member instance.
+  bool needs_construction(const Symbol* block);
+  bool needs_init(const Symbol* block);
+  // Whether the FB instance (or array of instances) `variable` declares needs code when created:
+  // its block does, or the declaration gives arguments (`t : TON(PT := T#1S)`).
+  bool instance_needs_init(const Symbol* variable);
+  bool needs_exit(const Symbol* block);
+  // The callable that builds one instance of `block` at THIS: its base's part, its member
+  // instances (each built, then its FB_init), its computed initial values. kNoCallable if none.
+  uint32_t constructor_for(const Symbol* block);
+  // The callable that calls FB_exit on one instance of `block` at THIS and on its members.
+  uint32_t destructor_for(const Symbol* block);
+  // The exit callable of a program or global list (FB_exit of its instances), run when the run
+  // ends (Program::exit_calls).
+  void exit_callable(const Symbol* owner, uint64_t instance);
+  // A POU's own FB_init / FB_exit method (not inherited); nullptr when it declares none.
+  const Symbol* own_method(const Symbol* block, std::string_view name) const;
+  // The function block type `variable` holds (directly or as array elements); nullptr otherwise.
+  const Symbol* instance_block(const Symbol* variable) const;
 
   void error(const Symbol* where, SyntaxNode node, std::string message);
   std::vector<CompileError>& errors() { return errors_; }
@@ -115,8 +142,12 @@ class Lowering {
   std::unordered_map<std::string, uint64_t> constants_;
   std::vector<CompileError> errors_;
   uint64_t image_areas_ = 0;  // %I area; %Q and %M follow
-  std::unordered_map<const Symbol*, std::vector<const Symbol*>> runtime_initialized_;
   std::unordered_map<const Symbol*, uint32_t> init_callables_;
+  std::unordered_map<const Symbol*, uint32_t> exit_callables_;
+  std::unordered_map<const Symbol*, uint32_t> constructors_;
+  std::unordered_map<const Symbol*, uint32_t> destructors_;
+  std::unordered_map<const Symbol*, bool> needs_construction_;
+  std::unordered_map<const Symbol*, bool> needs_exit_;
 };
 
 // A place in memory an expression names; Pointer means its address is on the value stack (plus
@@ -134,8 +165,18 @@ class BodyCompiler {
  public:
   BodyCompiler(Lowering& lowering, uint32_t callable_index);
   void compile();
-  // Stores the computed initial values of `owner`'s variables (Lowering::runtime_initialized).
-  void runtime_initial_values(const Symbol* owner);
+  // Stores one variable's computed initial value (Lowering::computed_initial).
+  void runtime_initial_value(const Symbol* variable);
+  // Init and construct callables, and the start of every call (compile_lifecycle.cpp): the
+  // computed initial values and FB instances of `owner`'s variables, in declaration order; those
+  // kept in the instance or globally (`per_call` false) or those in the call's frame (true).
+  void initialize_variables(const Symbol* owner, bool per_call);
+  // One FB instance at the address `push_address` pushes: built, then its FB_init (base first)
+  // with `arguments` (the declaration's `fb : FB_X(a := 1)`; an FB without FB_init takes them
+  // as input values).
+  void construct_instance(const Symbol* block, const std::function<void()>& push_address, SyntaxNode arguments);
+  // FB_exit of one instance (derived first), then its members'.
+  void destruct_instance(const Symbol* block, const std::function<void()>& push_address);
 
   // --- emission --------------------------------------------------------------------------------
   uint32_t emit(Op op, uint32_t a = 0, int64_t b = 0, uint16_t aux = 0);
@@ -151,6 +192,13 @@ class BodyCompiler {
   // The place `node` names (a variable, member, element, dereference); nullopt if it names none.
   std::optional<Place> place(SyntaxNode node);
   Place variable_place(const Symbol* variable);
+  // The variable's own storage: for a VAR_IN_OUT or REFERENCE, the slot holding the address (and,
+  // for ARRAY[*], the bounds), not the value it refers to.
+  Place slot_place(const Symbol* variable);
+  // Pushes (as LINT) the lower or upper bound of dimension `dimension` (from 0) of the array
+  // `array` names: a constant for a fixed array, read from the slot for an ARRAY[*] parameter.
+  // False when `array` is not an array or its bounds cannot be found.
+  bool push_bound(SyntaxNode array, size_t dimension, bool upper);
   void load(const Place& place);
   void address_of(const Place& place);  // pushes the address (Pointer: the offset added)
   // Stores the value on top of the stack (pushed after the place's address, for Pointer places).
@@ -199,6 +247,12 @@ class BodyCompiler {
   // For a Place that is not already a pointer: turns it into a Pointer place (address pushed).
   Place as_pointer(const Place& place);
 
+  // Ends the callable's code with RET and records its extent, frame size and initial frame.
+  void finish_callable(uint32_t begin, std::vector<uint8_t> frame_image);
+  // compile_lifecycle.cpp: the code of Init, Construct, Exit and Destruct callables.
+  void compile_lifecycle();
+  void exit_members(const Symbol* owner);
+
   // compile_il.cpp, compile_sfc.cpp
   void il_body(SyntaxNode body);
   void sfc_body(SyntaxNode body);
@@ -223,6 +277,16 @@ class BodyCompiler {
   const Symbol* check_function(std::string_view name) const;
   // Passes the value on top through `function` (with constant extra arguments), leaving its result.
   void call_check(const Symbol* function, const Type* value_type, const std::vector<int64_t>& extra);
+  // The same with extra arguments computed at run time: each function pushes one LINT.
+  void call_check_computed(const Symbol* function, const Type* value_type,
+                           const std::vector<std::function<void()>>& extra);
+  // CheckRangeSigned/CheckRangeUnsigned on the value on top, when `target` is a subrange type and
+  // the project declares the check.
+  void range_check(const Type* target);
+  // ARRAY[*] in-outs: after the address, the argument's bounds into the slot's bounds; `bound_slot`
+  // returns the Place of one bound (its offset in the slot given) ready for store().
+  void bind_open_bounds(SyntaxNode argument, const Symbol* parameter,
+                        const std::function<Place(uint64_t offset)>& bound_slot);
   // Pushes the address a VAR_IN_OUT parameter receives for `argument`.
   void in_out_address(SyntaxNode argument, const Symbol* parameter);
   void bind_frame_arguments(const Symbol* callee, const std::vector<check::CallArgument>& arguments);
@@ -282,6 +346,7 @@ class BodyCompiler {
   std::unordered_map<std::string, uint32_t> labels_;
   std::vector<std::pair<uint32_t, std::string>> jumps_;
   int depth_ = 0;
+  bool writing_ = false;  // compiling an assignment's target (CheckPointer's bWrite)
 };
 
 }  // namespace rung::run

@@ -56,8 +56,10 @@ namespace rung::run {
   X(F32_TO_S64) X(F64_TO_S64) X(F32_TO_U64) X(F64_TO_U64)                                              \
   /* control flow: a = target instruction */                                                           \
   X(JMP) X(JMP_BACK) X(JZ) X(JNZ) X(JZ_KEEP) X(JNZ_KEEP)                                               \
-  /* arrays: INDEX a = dimension table entry; pops index and base address, pushes element address */   \
-  X(INDEX) X(CHECK_PTR)                                                                                \
+  /* arrays: INDEX a = dimension table entry; pops index and base address, pushes element address;   \
+     BOUNDS (ARRAY[*]: bounds known at run time) pops upper and lower, checks the index below them,    \
+     replaces it by index - lower */                                                                   \
+  X(INDEX) X(BOUNDS) X(CHECK_PTR)                                                                      \
   /* calls: FRAME a = callable (opens its frame, initialised); ADDR_N a = offset in that new frame;   \
      CALL a = callable (pops the instance address, 0 for functions); CALL_VIRT a = method slot;       \
      NATIVE a = built-in; RET */                                                                       \

@@ -550,6 +550,17 @@ bool Machine::execute(uint32_t entry) {
         TOP().u += static_cast<uint64_t>(index - dimension.lower) * dimension.stride;
         NEXT();
       }
+      case Op::BOUNDS: {
+        const int64_t upper = POP().i;
+        const int64_t lower = POP().i;
+        const int64_t index = TOP().i;
+        if (index < lower || index > upper) [[unlikely]] {
+          fail(TrapKind::IndexOutOfBounds, fmt::format("array index {} is outside {}..{}", index, lower, upper));
+          return false;
+        }
+        TOP().i = index - lower;
+        NEXT();
+      }
       case Op::CHECK_PTR: {
         const uint64_t address = TOP().u;
         if (!valid(address, in.a)) [[unlikely]] {

@@ -27,7 +27,21 @@ constexpr uint64_t kNullGuard = 64;
 // the place CODESYS keeps its virtual function table pointer.
 constexpr uint32_t kInstanceHeaderBytes = 8;
 
-enum class CallableKind : uint8_t { Program, Function, FunctionBlock, Method, Action, PropertyGet, PropertySet, Init };
+// Init: a program's or global list's start (computed initial values, FB instances built);
+// Construct: one FB instance built (at THIS); Exit and Destruct: the same for FB_exit at the end.
+enum class CallableKind : uint8_t {
+  Program,
+  Function,
+  FunctionBlock,
+  Method,
+  Action,
+  PropertyGet,
+  PropertySet,
+  Init,
+  Construct,
+  Exit,
+  Destruct
+};
 
 struct Callable {
   std::string name;  // FB_Motor.Start, TON, PLC_PRG
@@ -75,6 +89,9 @@ class Program {
     uint64_t instance = 0;
   };
   std::vector<InitCall> init_calls;
+  // Run once when the run ends (Engine::finish), programs in reverse order, then global lists:
+  // FB_exit of their instances.
+  std::vector<InitCall> exit_calls;
 
   // The callable whose code holds instruction `pc`.
   const Callable* callable_at(uint32_t pc) const;
