@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <pugixml.hpp>
+#include <set>
 #include <sstream>
 #include <utility>
 
@@ -163,12 +164,16 @@ std::optional<std::vector<Unit>> st_units(std::string_view text) {
     while (top.parent() && top.parent() != root) top = top.parent();
     keys.emplace(top.begin(), "type:" + keywords::upper(type.name()));
   }
+  // A VAR_GLOBAL block is known by its section and qualifiers and its place among the blocks
+  // that share them, not by its first variable: adding or renaming that variable on both sides
+  // would otherwise make two new blocks out of one, each with a copy of the rest.
+  std::map<std::string, int> gvl_count;
   for (const ast::VarBlock& block : outline.global_blocks) {
-    const std::vector<ast::VarDeclaration> declarations = block.declarations();
-    std::string first = declarations.empty() || declarations.front().names().empty()
-                            ? std::string()
-                            : keywords::upper(declarations.front().names().front().text());
-    keys.emplace(block.node().begin(), "gvl:" + first);
+    std::string label(ast::var_section_name(block.section()));
+    for (const std::string_view q : {"CONSTANT", "RETAIN", "NON_RETAIN", "PERSISTENT"}) {
+      if (block.has_qualifier(q)) label += fmt::format(" {}", q);
+    }
+    keys.emplace(block.node().begin(), fmt::format("gvl:{}#{}", label, gvl_count[label]++));
   }
   for (const SyntaxNode& configuration : outline.configurations) {
     keys.emplace(configuration.begin(),
@@ -199,15 +204,37 @@ std::optional<std::vector<Unit>> st_units(std::string_view text) {
   return units;
 }
 
+// The name in a unit key ("pou:FB_A" and "FUNCTION_BLOCK:/FOLDER/FB_A": "FB_A"; a member's
+// "member:FB_A.M_RUN" and an .EXP action's "ACTION:/FOLDER/FB_A.RESET": "FB_A.M_RUN", "FB_A.RESET").
+std::string_view unit_name(std::string_view key) {
+  key.remove_prefix(std::min(key.size(), key.find(':') + 1));
+  const size_t slash = key.rfind('/');
+  return slash == std::string_view::npos ? key : key.substr(slash + 1);
+}
+
 // Merges units by key (see align); a unit changed on one side and deleted on the other is a
-// conflict written with markers.
+// conflict written with markers. So is the deletion of a POU one of whose members (a method or
+// action written after it) is such a conflict: kept with the member, not taken from under it.
 MergeResult merge_units(const std::vector<Unit>& base, const std::vector<Unit>& ours, const std::vector<Unit>& theirs,
                         const MergeLabels& labels) {
   MergeResult result;
-  for (const Slot& slot : align(unit_keys(base), unit_keys(ours), unit_keys(theirs))) {
-    const Unit* b = slot.base >= 0 ? &base[static_cast<size_t>(slot.base)] : nullptr;
-    const Unit* o = slot.ours >= 0 ? &ours[static_cast<size_t>(slot.ours)] : nullptr;
-    const Unit* t = slot.theirs >= 0 ? &theirs[static_cast<size_t>(slot.theirs)] : nullptr;
+  const std::vector<Slot> slots = align(unit_keys(base), unit_keys(ours), unit_keys(theirs));
+  const auto unit = [](const std::vector<Unit>& units, int at) {
+    return at >= 0 ? &units[static_cast<size_t>(at)] : nullptr;
+  };
+  const auto shown = [](const Unit* u) { return u->key.substr(u->key.find(':') + 1); };
+  std::set<std::string, std::less<>> owners_in_conflict;
+  for (const Slot& slot : slots) {
+    const Unit* b = unit(base, slot.base);
+    const Unit* kept = slot.theirs < 0 ? unit(ours, slot.ours) : slot.ours < 0 ? unit(theirs, slot.theirs) : nullptr;
+    if (b == nullptr || kept == nullptr || kept->text == b->text) continue;
+    const std::string_view name = unit_name(kept->key);
+    if (name.find('.') != std::string_view::npos) owners_in_conflict.emplace(name.substr(0, name.find('.')));
+  }
+  for (const Slot& slot : slots) {
+    const Unit* b = unit(base, slot.base);
+    const Unit* o = unit(ours, slot.ours);
+    const Unit* t = unit(theirs, slot.theirs);
     if (o != nullptr && t != nullptr) {
       MergeResult part = merge_lines(b != nullptr ? b->text : std::string(), o->text, t->text, labels);
       result.text += part.text;
@@ -218,8 +245,11 @@ MergeResult merge_units(const std::vector<Unit>& base, const std::vector<Unit>& 
       } else if (b->text != o->text) {
         append_conflict(result.text, o->text, {}, labels, line_end_of(o->text));
         ++result.conflicts;
-        result.notes.push_back(
-            fmt::format("{}: changed on our side, deleted on theirs", o->key.substr(o->key.find(':') + 1)));
+        result.notes.push_back(fmt::format("{}: changed on our side, deleted on theirs", shown(o)));
+      } else if (owners_in_conflict.count(unit_name(o->key)) > 0) {
+        append_conflict(result.text, o->text, {}, labels, line_end_of(o->text));
+        ++result.conflicts;
+        result.notes.push_back(fmt::format("{}: deleted on their side, a member of it changed on ours", shown(o)));
       }
     } else if (t != nullptr) {
       if (b == nullptr) {
@@ -227,8 +257,11 @@ MergeResult merge_units(const std::vector<Unit>& base, const std::vector<Unit>& 
       } else if (b->text != t->text) {
         append_conflict(result.text, {}, t->text, labels, line_end_of(t->text));
         ++result.conflicts;
-        result.notes.push_back(
-            fmt::format("{}: deleted on our side, changed on theirs", t->key.substr(t->key.find(':') + 1)));
+        result.notes.push_back(fmt::format("{}: deleted on our side, changed on theirs", shown(t)));
+      } else if (owners_in_conflict.count(unit_name(t->key)) > 0) {
+        append_conflict(result.text, {}, t->text, labels, line_end_of(t->text));
+        ++result.conflicts;
+        result.notes.push_back(fmt::format("{}: deleted on our side, a member of it changed on theirs", shown(t)));
       }
     }
   }
@@ -269,11 +302,16 @@ std::vector<pugi::xml_node> element_children(pugi::xml_node node) {
   return out;
 }
 
+const char* name_of(pugi::xml_node n) {
+  return n.attribute("Name") ? n.attribute("Name").value() : n.attribute("name").value();
+}
+
+// "tag|Name" for a named element, "tag#n" (the n-th unnamed one of its tag) otherwise.
 std::vector<std::string> element_keys(const std::vector<pugi::xml_node>& nodes) {
   std::vector<std::string> keys;
   std::map<std::string, int> unnamed;
   for (const pugi::xml_node n : nodes) {
-    const char* name = n.attribute("Name") ? n.attribute("Name").value() : n.attribute("name").value();
+    const char* name = name_of(n);
     if (*name != '\0') {
       keys.push_back(fmt::format("{}|{}", n.name(), name));
     } else {
@@ -281,6 +319,42 @@ std::vector<std::string> element_keys(const std::vector<pugi::xml_node>& nodes) 
     }
   }
   return keys;
+}
+
+// Keys must be unique, or align() pairs every twin with the first one's versions and drops the
+// rest. A name siblings share in any version (CODESYS writes one <data name=".../pou"> per POU
+// in an <addData>) is told apart in all three by the first child element's tag and name, then
+// by its place among the remaining twins.
+void make_keys_unique(std::vector<pugi::xml_node>* const nodes[3], std::vector<std::string>* const keys[3]) {
+  std::set<std::string> shared;
+  for (int v = 0; v < 3; ++v) {
+    std::map<std::string, int> count;
+    for (const std::string& key : *keys[v]) {
+      if (++count[key] == 2) shared.insert(key);
+    }
+  }
+  if (shared.empty()) return;
+  for (int v = 0; v < 3; ++v) {
+    std::vector<std::string>& k = *keys[v];
+    for (size_t i = 0; i < k.size(); ++i) {
+      if (shared.count(k[i]) == 0) continue;
+      const pugi::xml_node first =
+          (*nodes[v])[i].find_child([](pugi::xml_node c) { return c.type() == pugi::node_element; });
+      if (first) k[i] += fmt::format(">{}|{}", first.name(), name_of(first));
+    }
+    std::map<std::string, int> seen;
+    for (std::string& key : k) {
+      const int n = seen[key]++;
+      if (n > 0) key += fmt::format("#{}", n);
+    }
+  }
+}
+
+// An element whose child element is one of several kinds, not a list: PLCopen's holders of a
+// type, a value or a body's language, TwinCAT's Implementation.
+bool holds_a_choice(std::string_view tag) {
+  return tag == "type" || tag == "baseType" || tag == "returnType" || tag == "initialValue" || tag == "body" ||
+         tag == "Implementation";
 }
 
 // Whether two subtrees are the same (elements, attributes, text).
@@ -294,21 +368,36 @@ bool same_tree(pugi::xml_node a, pugi::xml_node b) {
 
 class XmlMerger {
  public:
-  explicit XmlMerger(const MergeLabels& labels) : labels_(labels) {}
+  // `attributes_are_code`: PLCopen, where names, types' parameters and initial values are
+  // attributes; TwinCAT keeps its code in CDATA and its attributes are the tool's metadata.
+  XmlMerger(const MergeLabels& labels, bool attributes_are_code)
+      : labels_(labels), attributes_are_code_(attributes_are_code) {}
 
   void merge(pugi::xml_node base, pugi::xml_node ours, pugi::xml_node theirs, const std::string& path) {
-    merge_attributes(base, ours, theirs);
+    merge_attributes(base, ours, theirs, path);
     if (std::string_view(ours.name()) == "LineIds") return;  // TwinCAT recomputes them
     if (is_text_element(ours) && is_text_element(theirs) && (!base || is_text_element(base))) {
       merge_text(base, ours, theirs, path);
       return;
     }
-    const std::vector<pugi::xml_node> b = element_children(base);
-    const std::vector<pugi::xml_node> o = element_children(ours);
-    const std::vector<pugi::xml_node> t = element_children(theirs);
-    const std::vector<std::string> bk = element_keys(b);
-    const std::vector<std::string> ok = element_keys(o);
-    const std::vector<std::string> tk = element_keys(t);
+    std::vector<pugi::xml_node> b = element_children(base);
+    std::vector<pugi::xml_node> o = element_children(ours);
+    std::vector<pugi::xml_node> t = element_children(theirs);
+    std::vector<std::string> bk = element_keys(b);
+    std::vector<std::string> ok = element_keys(o);
+    std::vector<std::string> tk = element_keys(t);
+    std::vector<pugi::xml_node>* const nodes[3] = {&b, &o, &t};
+    std::vector<std::string>* const keys[3] = {&bk, &ok, &tk};
+    make_keys_unique(nodes, keys);
+    // The one child of a choice (see holds_a_choice) chosen differently on both sides, or
+    // replaced on one side and changed on the other, is a conflict: ours stays; both side by
+    // side would be a variable of two types, read as the first.
+    if (holds_a_choice(ours.name()) && o.size() == 1 && t.size() == 1 && ok[0] != tk[0] &&
+        (base ? b.size() == 1 && !same_tree(b[0], o[0]) && !same_tree(b[0], t[0]) : true)) {
+      ++conflicts_;
+      notes_.push_back(fmt::format("{}/{}: replaced differently on both sides: kept ours", path, ok[0]));
+      return;
+    }
     pugi::xml_node previous;  // the last element of the result so far, in `ours`
     for (const Slot& slot : align(bk, ok, tk)) {
       const pugi::xml_node bn = slot.base >= 0 ? b[static_cast<size_t>(slot.base)] : pugi::xml_node();
@@ -345,7 +434,7 @@ class XmlMerger {
   std::vector<std::string>& notes() { return notes_; }
 
  private:
-  static void merge_attributes(pugi::xml_node base, pugi::xml_node ours, pugi::xml_node theirs) {
+  void merge_attributes(pugi::xml_node base, pugi::xml_node ours, pugi::xml_node theirs, const std::string& path) {
     std::vector<std::string> names;
     for (const pugi::xml_attribute a : ours.attributes()) names.emplace_back(a.name());
     for (const pugi::xml_attribute a : theirs.attributes()) {
@@ -360,8 +449,16 @@ class XmlMerger {
       const std::optional<std::string> ov = value(o);
       const std::optional<std::string> tv = value(t);
       // Only their change of a value we left alone applies; where both changed it, ours stays
-      // (ids, product versions: metadata the vendor tool rewrites).
-      if (ov == tv || tv == bv || ov != bv) continue;
+      // (ids, product versions: metadata the vendor tool rewrites), as a conflict where the
+      // value is code: their change is dropped, which must not pass silently.
+      if (ov == tv || tv == bv) continue;
+      if (ov != bv) {
+        if (attributes_are_code_ && !is_metadata(ours, name)) {
+          ++conflicts_;
+          notes_.push_back(fmt::format("{}@{}: changed differently on both sides: kept ours", path, name));
+        }
+        continue;
+      }
       if (!tv) {
         ours.remove_attribute(name.c_str());
       } else if (o) {
@@ -421,7 +518,18 @@ class XmlMerger {
     parent.remove_child(node);
   }
 
+  // A PLCopen attribute the tool rewrites on every save, not code.
+  static bool is_metadata(pugi::xml_node node, const std::string& name) {
+    if (name == "ObjectId" || name == "creationDateTime" || name == "modificationDateTime") return true;
+    for (pugi::xml_node n = node; n; n = n.parent()) {
+      const std::string_view tag = n.name();
+      if (tag == "fileHeader" || tag == "contentHeader") return true;
+    }
+    return false;
+  }
+
   const MergeLabels& labels_;
+  bool attributes_are_code_;
   size_t conflicts_ = 0;
   std::vector<std::string> notes_;
 };
@@ -497,8 +605,8 @@ std::string restore_empty_element_spaces(const std::string& xml) {
 
 constexpr unsigned kParseFlags = (pugi::parse_full | pugi::parse_ws_pcdata) & ~pugi::parse_eol;
 
-MergeResult merge_xml(std::string_view base, std::string_view ours, std::string_view theirs,
-                      const MergeLabels& labels) {
+MergeResult merge_xml(std::string_view base, std::string_view ours, std::string_view theirs, const MergeLabels& labels,
+                      bool attributes_are_code) {
   MergeResult result;
   pugi::xml_document b;
   pugi::xml_document o;
@@ -520,7 +628,7 @@ MergeResult merge_xml(std::string_view base, std::string_view ours, std::string_
     result.text = std::string(ours);
     return result;
   }
-  XmlMerger merger(labels);
+  XmlMerger merger(labels, attributes_are_code);
   merger.merge(b.document_element(), ob, tb, ob.name());
   result.conflicts = merger.conflicts();
   result.notes = std::move(merger.notes());
@@ -562,13 +670,27 @@ std::optional<std::vector<Unit>> exp_units(std::string_view path, std::string_vi
   if (doc.kind != containers::ContainerKind::CodesysExp || doc.objects.empty()) return std::nullopt;
   std::vector<Unit> units;
   uint32_t at = 0;
+  uint32_t previous = 0;  // where the previous object's header is
   std::string key = "\x01head";
   for (const containers::ContainerObject& object : doc.objects) {
-    if (object.file_offset < at) return std::nullopt;
-    units.push_back({key, std::string(text.substr(at, object.file_offset - at))});
+    // An object starts at the "(* @NESTEDCOMMENTS" line that opens its markers, when it has
+    // one: a deleted object takes its own markers along, not those of the object after it
+    // (which lost them when the one before it went, and the export no longer read).
+    uint32_t begin = object.file_offset;
+    const size_t marker = text.rfind("(* @NESTEDCOMMENTS", object.file_offset);
+    if (marker != std::string_view::npos && marker >= at && (units.empty() || marker > previous)) {
+      const size_t nl = text.rfind('\n', marker);
+      const size_t line = nl == std::string_view::npos ? 0 : nl + 1;
+      if (text.substr(line, marker - line).find_first_not_of(" \t") == std::string_view::npos) {
+        begin = static_cast<uint32_t>(line);
+      }
+    }
+    if (begin < at) return std::nullopt;
+    units.push_back({key, std::string(text.substr(at, begin - at))});
     key = fmt::format("{}:{}/{}", keywords::upper(object.kind), keywords::upper(object.path),
                       keywords::upper(object.name));
-    at = object.file_offset;
+    at = begin;
+    previous = object.file_offset;
   }
   units.push_back({key, std::string(text.substr(at))});
   return units;
@@ -640,7 +762,7 @@ MergeResult merge_file(std::string_view path, std::string_view base, std::string
                        const MergeLabels& labels) {
   const containers::ContainerKind kind = containers::detect_container(path, ours);
   if (kind == containers::ContainerKind::TwinCat || kind == containers::ContainerKind::PlcOpen) {
-    return merge_xml(base, ours, theirs, labels);
+    return merge_xml(base, ours, theirs, labels, kind == containers::ContainerKind::PlcOpen);
   }
   // Text: decoded to UTF-8 for the parser, written back in our side's encoding.
   const source::DecodedText b = source::decode(base);

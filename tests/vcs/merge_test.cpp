@@ -19,8 +19,13 @@ namespace {
 
 using test::crlf;
 
+// A file of the container reader's tests.
+std::string container_file(const char* name) {
+  return test::read_file(test::source_dir() / "tests/parser/containers/data" / name);
+}
+
 std::string motor() {
-  return test::read_file(test::source_dir() / "tests/parser/containers/data/FB_Motor.TcPOU");
+  return container_file("FB_Motor.TcPOU");
 }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -161,6 +166,132 @@ TEST(MergeFile, MalformedXmlIsAnErrorAndKeepsOurs) {
   const MergeResult r = merge_file("FB_Motor.TcPOU", motor(), motor(), "<?xml version=\"1.0\"?><TcPlcObject><POU>");
   EXPECT_NE(r.error.find("malformed XML in the theirs version"), std::string::npos) << r.error;
   EXPECT_EQ(r.text, motor());
+}
+
+// Found by the merge property test (merge_fuzz_test.cpp): a VAR_GLOBAL block was known by its
+// first variable, so a variable added at the top on both sides made two new blocks, each with a
+// copy of the others, and our deletion survived only in our copy.
+TEST(MergeFile, StGvlWithNewFirstVariablesOnBothSidesStaysOneBlock) {
+  const std::string base = "VAR_GLOBAL\n    bStart : BOOL;\n    bStop : BOOL;\n    bSensor : BOOL;\nEND_VAR\n";
+  const std::string ours = "VAR_GLOBAL\n    nOurs : INT;\n    bStart : BOOL;\n    bStop : BOOL;\nEND_VAR\n";
+  const std::string theirs =
+      "VAR_GLOBAL\n    nTheirs : INT;\n    bStart : BOOL;\n    bStop : BOOL;\n    bSensor : BOOL;\nEND_VAR\n";
+  const MergeResult r = merge_file("GVL.st", base, ours, theirs);
+  // One block, merged line by line: both additions at the same place are a conflict.
+  EXPECT_EQ(r.conflicts, 1u);
+  EXPECT_EQ(r.text,
+            "VAR_GLOBAL\n<<<<<<< ours\n    nOurs : INT;\n=======\n    nTheirs : INT;\n>>>>>>> theirs\n"
+            "    bStart : BOOL;\n    bStop : BOOL;\nEND_VAR\n");
+  // Apart, they merge cleanly.
+  const std::string theirs_apart =
+      "VAR_GLOBAL\n    bStart : BOOL;\n    nTheirs : INT;\n    bStop : BOOL;\n    bSensor : BOOL;\nEND_VAR\n";
+  const MergeResult apart = merge_file("GVL.st", base, ours, theirs_apart);
+  EXPECT_EQ(apart.conflicts, 0u);
+  EXPECT_EQ(apart.text,
+            "VAR_GLOBAL\n    nOurs : INT;\n    bStart : BOOL;\n    nTheirs : INT;\n    bStop : BOOL;\nEND_VAR\n");
+}
+
+// Found by the merge property test: CODESYS writes one <data name=".../pou"> per POU; with one
+// key for both, their change to the second POU was dropped without a word.
+TEST(MergeFile, PlcOpenSiblingsSharingANameMergeOneByOne) {
+  const std::string base = container_file("Codesys_application.xml");
+  const std::string ours = replaced(base, "\tdev.Poll();", "\tdev.Poll();\n\tdev.Flush();");
+  const std::string theirs = replaced(base, "GVL_Mqtt.nQos := 2;", "GVL_Mqtt.nQos := 1;");
+  const MergeResult r = merge_file("Codesys_application.xml", base, ours, theirs);
+  EXPECT_EQ(r.conflicts, 0u);
+  EXPECT_TRUE(r.error.empty()) << r.error;
+  EXPECT_NE(r.text.find("dev.Flush();"), std::string::npos);
+  EXPECT_NE(r.text.find("GVL_Mqtt.nQos := 1;"), std::string::npos);
+  EXPECT_EQ(r.text.find("GVL_Mqtt.nQos := 2;"), std::string::npos);
+  // And when only they changed anything.
+  const MergeResult theirs_only = merge_file("Codesys_application.xml", base, base, theirs);
+  EXPECT_NE(theirs_only.text.find("GVL_Mqtt.nQos := 1;"), std::string::npos);
+}
+
+// Found by the merge property test: in PLCopen an initial value is an attribute, and ours won
+// where both changed one, so their value was dropped silently.
+TEST(MergeFile, PlcOpenValueChangedDifferentlyOnBothSidesIsAConflict) {
+  const std::string base = container_file("Small_plcopen.xml");
+  const std::string ours = replaced(base, "<simpleValue value=\"10\"/>", "<simpleValue value=\"11\"/>");
+  const std::string theirs = replaced(base, "<simpleValue value=\"10\"/>", "<simpleValue value=\"12\"/>");
+  const MergeResult r = merge_file("Small_plcopen.xml", base, ours, theirs);
+  EXPECT_EQ(r.conflicts, 1u);
+  EXPECT_EQ(r.text, ours);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("variable|nMax/initialValue#0/simpleValue#0@value: changed differently on both sides: "
+                            "kept ours"),
+            std::string::npos)
+      << r.notes[0];
+  // Metadata the tool rewrites on every save stays a silent "ours".
+  const std::string ours_saved = replaced(base, "2024-05-03T08:00:00", "2024-06-01T10:00:00");
+  const std::string theirs_saved = replaced(base, "2024-05-03T08:00:00", "2024-06-02T11:00:00");
+  EXPECT_EQ(merge_file("Small_plcopen.xml", base, ours_saved, theirs_saved).conflicts, 0u);
+}
+
+// Found by the merge property test: a <type> holds one type; two different choices were both
+// kept (<DINT/><REAL/>), a clean merge that rung then read as DINT.
+TEST(MergeFile, PlcOpenTypeChosenDifferentlyOnBothSidesIsAConflict) {
+  const std::string base = container_file("Small_plcopen.xml");
+  const std::string type = "<variable name=\"nTick\" address=\"%MW4\">\n              <type>\n                <";
+  const std::string ours = replaced(base, type + "INT/>", type + "DINT/>");
+  const std::string theirs = replaced(base, type + "INT/>", type + "REAL/>");
+  const MergeResult r = merge_file("Small_plcopen.xml", base, ours, theirs);
+  EXPECT_EQ(r.conflicts, 1u);
+  EXPECT_EQ(r.text, ours);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("variable|nTick/type#0/DINT#0: replaced differently on both sides: kept ours"),
+            std::string::npos)
+      << r.notes[0];
+  // The same choice on both sides, or one side's alone, is no conflict.
+  EXPECT_EQ(merge_file("Small_plcopen.xml", base, ours, ours).conflicts, 0u);
+  const MergeResult theirs_only = merge_file("Small_plcopen.xml", base, base, theirs);
+  EXPECT_EQ(theirs_only.conflicts, 0u);
+  EXPECT_EQ(theirs_only.text, theirs);
+}
+
+// Found by the merge property test: a method written after its block is a unit of its own;
+// their deletion of the block and its method against our change of the method marked the method
+// but took the block from under it, so choosing ours left an orphan method.
+TEST(MergeFile, StPouDeletedThereWhileItsMemberChangedHereIsKeptInTheConflict) {
+  const std::string base =
+      "FUNCTION_BLOCK FB_A\nVAR\n    x : INT;\nEND_VAR\nx := 1;\nEND_FUNCTION_BLOCK\n"
+      "METHOD M_Run : BOOL\nM_Run := TRUE;\nEND_METHOD\n\n"
+      "PROGRAM P\nEND_PROGRAM\n";
+  const std::string ours = replaced(base, "M_Run := TRUE;", "M_Run := FALSE;");
+  const std::string theirs = "PROGRAM P\nEND_PROGRAM\n";
+  const MergeResult r = merge_file("x.st", base, ours, theirs);
+  EXPECT_EQ(r.conflicts, 2u);
+  EXPECT_EQ(r.text,
+            "<<<<<<< ours\nFUNCTION_BLOCK FB_A\nVAR\n    x : INT;\nEND_VAR\nx := 1;\nEND_FUNCTION_BLOCK\n=======\n"
+            ">>>>>>> theirs\n<<<<<<< ours\nMETHOD M_Run : BOOL\nM_Run := FALSE;\nEND_METHOD\n=======\n"
+            ">>>>>>> theirs\nPROGRAM P\nEND_PROGRAM\n");
+  EXPECT_EQ(r.notes, (std::vector<std::string>{"FB_A: deleted on their side, a member of it changed on ours",
+                                               "FB_A.M_RUN: changed on our side, deleted on theirs"}));
+}
+
+// The text of an .EXP object from its "(* @NESTEDCOMMENTS" line to the next one's.
+std::string exp_object(const std::string& text, const std::string& header) {
+  const size_t at = text.find(header);
+  const size_t begin = text.rfind("(* @NESTEDCOMMENTS", at);
+  const size_t end = text.find("(* @NESTEDCOMMENTS", at);
+  EXPECT_NE(at, std::string::npos) << header;
+  return text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+}
+
+// Found by the merge property test: an .EXP object's markers went with the object before it,
+// so deleting that one took them along and left the next object unreadable; deleting both
+// neighbours was a conflict. Each object now starts at its own "(* @NESTEDCOMMENTS" line.
+TEST(MergeFile, ExpObjectsDeletedOnEachSideGoWithTheirOwnMarkers) {
+  const std::string base = container_file("Project.EXP");
+  const std::string ours = replaced(base, exp_object(base, "PROGRAM PLC_PRG"), "");
+  const std::string theirs = replaced(base, exp_object(base, "gCounter : FB_COUNT"), "");
+  const MergeResult r = merge_file("Project.EXP", base, ours, theirs);
+  EXPECT_EQ(r.conflicts, 0u);
+  EXPECT_EQ(r.text, replaced(ours, exp_object(base, "gCounter : FB_COUNT"), ""));
+  const FileObjects read = read_objects("Project.EXP", r.text);
+  std::vector<std::string> names;
+  for (const Object& o : read.objects) names.push_back(o.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"ST_AXIS", "FB_COUNT", "F_LD"}));
 }
 
 // Random edits of a real file on both sides, each to a different line of the ST inside: the
