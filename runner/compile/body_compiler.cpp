@@ -95,17 +95,29 @@ void BodyCompiler::compile() {
   // The frame's variables with computed initial values or FB instances (a function's or method's
   // locals, VAR_TEMP), on every call.
   initialize_variables(pou_, true);
+  std::vector<SyntaxNode> bodies;
   if (body) {
-    const std::string_view kind = body.kind();
+    bodies.push_back(body);
+  } else if (pou_->node.kind() == "source_file") {
+    // A snippet (VAR blocks and statements without a POU header, as manuals print them) is the
+    // body of an unnamed PROGRAM: its statements, in file order.
+    for (uint32_t i = 0; i < pou_->node.named_child_count(); ++i) {
+      SyntaxNode child = pou_->node.named_child(i);
+      const std::string_view kind = child.kind();
+      if (kind == "statement_list" || kind == "il_body" || kind == "sfc_network") bodies.push_back(child);
+    }
+  }
+  for (SyntaxNode part : bodies) {
+    const std::string_view kind = part.kind();
     if (kind == "statement_list") {
-      statement_list(body);
+      statement_list(part);
     } else if (kind == "il_body") {
-      il_body(body);
+      il_body(part);
     } else if (kind == "sfc_network") {
-      sfc_body(body);
+      sfc_body(part);
     } else {
       // TRANSITION t := expression; as a callable returning BOOL.
-      fail(body, fmt::format("rung cannot run this kind of body yet ({})", kind));
+      fail(part, fmt::format("rung cannot run this kind of body yet ({})", kind));
     }
   }
   const uint32_t end_of_body = here();

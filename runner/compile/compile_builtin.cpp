@@ -291,12 +291,21 @@ std::optional<const Type*> BodyCompiler::builtin_call(std::string_view name, Syn
     const Type* in_type = Layouts::storage_type(arg_type(0));
     if (!in_type || in_type->bits == 0) return std::nullopt;
     const unsigned width = std::max<unsigned>(in_type->bits, 1);
+    // SHR of a signed integer (SINT, INT, DINT: a CODESYS extension, IEC 61131-3 shifts ANY_BIT only)
+    // is an arithmetic shift, filled with the sign bit (CODESYS V3 textbook, SHR example; CODESYS
+    // 2.3 online help, operator SHR): the value stays sign-extended to 64 bits and the count is
+    // capped at 64 - width, which already fills every bit of the type with the sign.
+    const bool arithmetic = upper == "SHR" && is_signed_type(in_type) && width < 64;
     value(args[0], in_type);
-    if (width < 64) {
+    if (width < 64 && !arithmetic) {
       emit(Op::PUSH, 0, static_cast<int64_t>((uint64_t{1} << width) - 1));
       emit(Op::AND);
     }
     value(args[1], lint);
+    if (arithmetic) {
+      emit(Op::PUSH, 0, static_cast<int64_t>(64 - width));
+      emit(Op::MIN_U);
+    }
     if (upper == "SHL") emit(Op::SHL);
     if (upper == "SHR") emit(Op::SHR);
     if (upper == "ROL") emit(Op::ROL, 0, 0, static_cast<uint16_t>(width));

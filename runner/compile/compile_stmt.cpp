@@ -105,12 +105,18 @@ void BodyCompiler::assignment(SyntaxNode left, SyntaxNode right, std::string_vie
       fail(left, "rung cannot assign to this yet");
       return;
     }
-    auto source = place(right);
-    if (!source) {
-      fail(right, "REF= needs a variable on its right");
-      return;
+    // `ref REF= 0` clears the reference (__ISVALIDREF is FALSE afterwards).
+    const auto constant = lowering_.model().constant_value(right, pou_);
+    if (constant && constant->is_integer() && constant->integer == 0) {
+      emit(Op::PUSH, 0, 0);
+    } else {
+      auto source = place(right);
+      if (!source) {
+        fail(right, "REF= needs a variable on its right");
+        return;
+      }
+      address_of(*source);
     }
-    address_of(*source);
     const Op op_store = storage.kind == Storage::Kind::Global     ? Op::ST_64_G
                         : storage.kind == Storage::Kind::Instance ? Op::ST_64_I
                                                                   : Op::ST_64_F;

@@ -157,6 +157,53 @@ END_PROGRAM
   EXPECT_EQ(run->text("w"), "24");
 }
 
+TEST(RunExpressions, ShrOfASignedIntegerIsArithmetic) {
+  // CODESYS V3 textbook, example 5.37: SHR on an INT fills with the sign bit (16#F100 -> 16#FF10);
+  // a count at or beyond the width leaves only sign bits.
+  auto run = run_text(R"(
+PROGRAM Main
+VAR
+  i, big, pos : INT;
+  s : SINT;
+  d : DINT;
+  iIn : INT := -3840;
+  iPos : INT := 16384;
+  sIn : SINT := -128;
+  dIn : DINT := -8;
+END_VAR
+i := SHR(iIn, 4);
+big := SHR(iIn, 40);
+pos := SHR(iPos, 2);
+s := SHR(sIn, 7);
+d := SHR(dIn, 1);
+END_PROGRAM
+)");
+  ASSERT_CLEAN(run);
+  EXPECT_EQ(run->text("i"), "-240");
+  EXPECT_EQ(run->text("big"), "-1");
+  EXPECT_EQ(run->text("pos"), "4096");
+  EXPECT_EQ(run->text("s"), "-1");
+  EXPECT_EQ(run->text("d"), "-4");
+}
+
+TEST(RunExpressions, SignedTypedLiterals) {
+  auto run = run_text(R"(
+PROGRAM Main
+VAR
+  x, y : INT;
+  z : DINT;
+END_VAR
+x := INT#-3840;
+y := SHR(INT#-3840, 4);
+z := DINT#-5 + 1;
+END_PROGRAM
+)");
+  ASSERT_CLEAN(run);
+  EXPECT_EQ(run->text("x"), "-3840");
+  EXPECT_EQ(run->text("y"), "-240");
+  EXPECT_EQ(run->text("z"), "-4");
+}
+
 TEST(RunExpressions, BooleanLogicAndComparisons) {
   auto run = run_text(R"(
 PROGRAM Main
