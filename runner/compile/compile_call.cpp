@@ -450,6 +450,21 @@ const Type* BodyCompiler::call(SyntaxNode node, bool want_result) {
   }
 
   if (!callee) {
+    // timers[i](IN := TRUE), pFb^(), inst.inner(): an instance that is not a declared name.
+    const Type* instance_type = Layouts::storage_type(callee_info.type);
+    if (instance_type && instance_type->kind == TypeKind::Reference) {
+      instance_type = Layouts::storage_type(instance_type->element);
+    }
+    if (name.empty() && instance_type && instance_type->kind == TypeKind::Pou && instance_type->declaration &&
+        (instance_type->declaration->kind == SymbolKind::FunctionBlock ||
+         instance_type->declaration->kind == SymbolKind::Class)) {
+      auto instance = place(function);
+      if (!instance) {
+        fail(function, "rung cannot find this instance");
+        return call_info.type;
+      }
+      return instance_call(instance_type->declaration, *instance, instance_type->declaration, arguments, node);
+    }
     if (!name.empty()) {
       if (auto result = builtin_call(name, node, nullptr, arguments, call_info)) return *result;
     }

@@ -210,13 +210,10 @@ bool Machine::execute(uint32_t entry) {
   const Instr* const code = program_.code.data();
   const Slot* const values_limit = values_limit_;
 
-  struct Return {
-    const Instr* pc;
-    uint64_t inst;
-    uint64_t frame;
-  };
-  std::vector<Return> returns;
-  std::vector<uint64_t> pending;  // frames opened by FRAME whose CALL has not come yet
+  std::vector<Return>& returns = returns_;
+  std::vector<uint64_t>& pending = pending_;  // frames opened by FRAME whose CALL has not come yet
+  returns.clear();
+  pending.clear();
   returns.reserve(64);
   pending.reserve(16);
 

@@ -94,6 +94,16 @@ class Machine {
   uint32_t current_pc_ = 0;
   std::vector<StackEntry> call_stack_;
   std::optional<RunError> error_;
+
+  // The interpreter's return stack and the frames opened by FRAME whose CALL has not come yet:
+  // members, so that their memory is kept from call to call (a cycle allocates nothing).
+  struct Return {
+    const Instr* pc;
+    uint64_t inst;
+    uint64_t frame;
+  };
+  std::vector<Return> returns_;
+  std::vector<uint64_t> pending_;
 };
 
 }  // namespace rung::run

@@ -202,6 +202,37 @@ END_PROGRAM
   EXPECT_EQ(run->text("gExits"), "'axis;base;'");
 }
 
+TEST(RunLifecycle, InstancesInArraysAndBehindPointersAreCalled) {
+  // timers[i](...) and pFb^(...): the instance is an element or a dereference, not a name.
+  auto run = run_text(R"(
+PROGRAM PLC_PRG
+VAR
+  timers : ARRAY[1..3] OF TON;
+  counters : ARRAY[0..1] OF CTU;
+  pCounter : POINTER TO CTU;
+  i : INT;
+  done : INT;
+END_VAR
+done := 0;
+FOR i := 1 TO 3 DO
+  timers[i](IN := TRUE, PT := INT_TO_TIME(i * 20));
+  IF timers[i].Q THEN
+    done := done + 1;
+  END_IF
+END_FOR
+pCounter := ADR(counters[1]);
+pCounter^(CU := NOT pCounter^.CU, PV := 100);
+END_PROGRAM
+)",
+                      {.cycles = 5});
+  ASSERT_CLEAN(run);
+  // Cycle 5 is at T#40ms: timers 1 (20 ms) and 2 (40 ms) have elapsed, timer 3 (60 ms) not.
+  EXPECT_EQ(run->text("done"), "2");
+  EXPECT_EQ(run->text("timers[2].ET"), "T#40ms");
+  EXPECT_EQ(run->text("counters[1].CV"), "3");
+  EXPECT_EQ(run->text("counters[0].CV"), "0");
+}
+
 TEST(RunOpenArrays, ArrayStarInOutsIndexWithTheCallersBounds) {
   // CODESYS V3: ARRAY[*] in VAR_IN_OUT takes arrays of any bounds; LOWER_BOUND/UPPER_BOUND give
   // them (dimension from 1).
