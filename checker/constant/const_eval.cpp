@@ -62,9 +62,10 @@ std::optional<ConstValue> literal_value(SyntaxNode literal) {
     return std::nullopt;
   }
   if (kind == "typed_literal") {
-    // INT#-5: the value after '#', with its sign.
-    SyntaxNode value = literal.child_by_field("value");
-    if (!value) return std::nullopt;
+    // INT#-5: the value after '#', with its sign. The grammar's `value` field spans the sign and
+    // the number, and looking it up finds the sign token; the number is the last named child.
+    if (literal.named_child_count() < 2) return std::nullopt;
+    SyntaxNode value = literal.named_child(literal.named_child_count() - 1);
     bool negative = false;
     for (uint32_t i = 0; i < literal.child_count(); ++i) {
       if (literal.child(i).kind() == "-") negative = true;

@@ -297,7 +297,7 @@ const Type* BodyCompiler::value(SyntaxNode node, const Type* target) {
   } else if (kind == "call_expression") {
     pushed = call(node, true);
   } else if (kind == "typed_literal" && typed_literal(node, in.type)) {
-    // INT#-3840: a typed literal the checker left without a value (a signed one).
+    // A typed literal the checker gave no value (kept for literals its evaluator does not read).
   } else if (kind == "date_literal" || kind == "time_of_day_literal" || kind == "date_and_time_literal") {
     const PointKind point = kind == "date_literal"          ? PointKind::Date
                             : kind == "time_of_day_literal" ? PointKind::TimeOfDay
