@@ -29,19 +29,15 @@ void BodyCompiler::runtime_initial_value(const Symbol* variable) {
   // `x : T := expression` computed in code.
   SyntaxNode value_node = variable->node.child_by_field("value");
   set_position(value_node);
-  Place target = variable_place(variable);
-  if (!target.type) return;
-  const bool aggregate = scalar_kind(target.type) == Scalar::None;
   if (Layouts::held_by_reference(variable)) {
     // REFERENCE TO x := y: the slot takes y's address.
     const Storage storage = lowering_.storage_of(variable, pou_);
+    if (storage.kind == Storage::Kind::None) return;
     auto source = place(value_node);
     if (!source) {
       fail(value_node, "a REFERENCE's initial value must be a variable");
       return;
     }
-    lowering_.program().code.pop_back();  // the load variable_place() emitted for the slot
-    lowering_.program().positions.pop_back();
     address_of(*source);
     emit(storage.kind == Storage::Kind::Global     ? Op::ST_64_G
          : storage.kind == Storage::Kind::Instance ? Op::ST_64_I
@@ -49,6 +45,9 @@ void BodyCompiler::runtime_initial_value(const Symbol* variable) {
          static_cast<uint32_t>(storage.offset));
     return;
   }
+  Place target = variable_place(variable);
+  if (!target.type) return;
+  const bool aggregate = scalar_kind(target.type) == Scalar::None;
   if (target.mode == Place::Mode::Pointer || aggregate) target = as_pointer(target);
   const Type* pushed = value(value_node, target.type);
   store(target, pushed);

@@ -585,7 +585,16 @@ Place BodyCompiler::variable_place(const Symbol* variable) {
     place.mode = Place::Mode::Pointer;
     place.offset = 0;
     const Type* type = variable->type;
-    if (type && type->kind == TypeKind::Reference) place.type = type->element;
+    if (type && type->kind == TypeKind::Reference) {
+      place.type = type->element;
+      // CODESYS (compiler 3.5.7.40 on) calls CheckPointer on REFERENCE accesses as on pointers.
+      if (const Symbol* check = check_function("CheckPointer")) {
+        Layouts& layouts = lowering_.layouts();
+        call_check(check, elementary("LWORD"),
+                   {static_cast<int64_t>(layouts.of(type->element).size),
+                    static_cast<int64_t>(layouts.granularity(type->element)), writing_ ? 1 : 0});
+      }
+    }
   }
   return place;
 }

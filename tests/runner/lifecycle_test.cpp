@@ -443,5 +443,49 @@ END_PROGRAM
   EXPECT_EQ(run->text("gSpare.a"), "7");  // the NULL write went where CheckPointer said
 }
 
+TEST(RunChecks, CheckPointerSeesReferenceAccessesToo) {
+  // CODESYS help, POU CheckPointer: from compiler 3.5.7.40 on, REFERENCE variables are checked as
+  // pointers are.
+  auto run = run_text(R"(
+FUNCTION CheckPointer : POINTER TO BYTE
+VAR_INPUT
+  ptToTest : POINTER TO BYTE;
+  iSize : DINT;
+  iGran : DINT;
+  bWrite : BOOL;
+END_VAR
+gCalls := gCalls + 1;
+gLastSize := iSize;
+gLastWrite := bWrite;
+CheckPointer := ptToTest;
+END_FUNCTION
+
+VAR_GLOBAL
+  gCalls : INT;
+  gLastSize : DINT;
+  gLastWrite : BOOL;
+END_VAR
+
+PROGRAM PLC_PRG
+VAR
+  target : LREAL := 2.5;
+  r : REFERENCE TO LREAL REF= target;
+  x : LREAL;
+  readCalls : INT;
+END_VAR
+x := r;
+readCalls := gCalls;
+r := 4.0;
+END_PROGRAM
+)");
+  ASSERT_CLEAN(run);
+  EXPECT_EQ(run->text("PLC_PRG.x"), "2.5");
+  EXPECT_EQ(run->text("PLC_PRG.readCalls"), "1");
+  EXPECT_EQ(run->text("gCalls"), "2");
+  EXPECT_EQ(run->text("gLastSize"), "8");
+  EXPECT_EQ(run->text("gLastWrite"), "TRUE");
+  EXPECT_EQ(run->text("PLC_PRG.target"), "4");
+}
+
 }  // namespace
 }  // namespace rung::run::testing
