@@ -296,8 +296,6 @@ const Type* BodyCompiler::value(SyntaxNode node, const Type* target) {
     pushed = unary(node, in);
   } else if (kind == "call_expression") {
     pushed = call(node, true);
-  } else if (kind == "typed_literal" && typed_literal(node, in.type)) {
-    // A typed literal the checker gave no value (kept for literals its evaluator does not read).
   } else if (kind == "date_literal" || kind == "time_of_day_literal" || kind == "date_and_time_literal") {
     const PointKind point = kind == "date_literal"          ? PointKind::Date
                             : kind == "time_of_day_literal" ? PointKind::TimeOfDay
@@ -323,30 +321,6 @@ const Type* BodyCompiler::value(SyntaxNode node, const Type* target) {
     return target;
   }
   return pushed;
-}
-
-bool BodyCompiler::typed_literal(SyntaxNode node, const Type* type) {
-  // The number is the last named child (after the type, '#' and the sign).
-  SyntaxNode number = node.named_child_count() > 0 ? node.named_child(node.named_child_count() - 1) : SyntaxNode();
-  if (!number) return false;
-  bool negative = false;
-  for (uint32_t i = 0; i < node.child_count(); ++i) negative = negative || node.child(i).kind() == "-";
-  if (number.kind() == "integer_literal") {
-    auto magnitude = check::parse_integer_literal(number.text());
-    if (!magnitude) return false;
-    push_constant(check::ConstValue::of_integer(negative ? -*magnitude : *magnitude), type);
-    return true;
-  }
-  if (number.kind() == "real_literal") {
-    auto magnitude = check::parse_real_literal(number.text());
-    if (!magnitude) return false;
-    check::ConstValue value;
-    value.kind = check::ConstValue::Kind::Real;
-    value.real = negative ? -*magnitude : *magnitude;
-    push_constant(value, type);
-    return true;
-  }
-  return false;
 }
 
 const Type* BodyCompiler::comparison(std::string_view op, SyntaxNode left, SyntaxNode right) {

@@ -281,9 +281,7 @@ void BodyCompiler::compile_lifecycle() {
   const CallableKind kind = program.callables[callable_index_].kind;
   const uint32_t begin = here();
   position_ = pou_->node.begin();
-  if (kind == CallableKind::Init) {
-    initialize_variables(pou_, false);
-  } else if (kind == CallableKind::Construct) {
+  if (kind == CallableKind::Init || kind == CallableKind::Construct) {
     initialize_variables(pou_, false);
   } else if (kind == CallableKind::Destruct) {
     // FB_exit of each level, the derived first; then the member instances', last declared first.

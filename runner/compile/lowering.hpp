@@ -239,8 +239,6 @@ class BodyCompiler {
   const Type* binary(SyntaxNode node, const ExprInfo& info);
   const Type* unary(SyntaxNode node, const ExprInfo& info);
   const Type* comparison(std::string_view op, SyntaxNode left, SyntaxNode right);
-  // Pushes a typed literal's value (INT#-5) as `type`; false when it has none.
-  bool typed_literal(SyntaxNode node, const Type* type);
   const Type* arithmetic_type(const Type* type) const;
   std::optional<Place> identifier_place(SyntaxNode node, const ExprInfo& info);
   std::optional<Place> member_place(SyntaxNode node, const ExprInfo& info);
